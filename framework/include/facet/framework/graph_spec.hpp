@@ -1,0 +1,68 @@
+#pragma once
+// A graph file after parsing, variant selection and parameter substitution, but before it is
+// checked against the stages that plugins provide. Every element remembers where it came from,
+// so later checks can still point at the right line of the right file.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "facet/framework/diagnostics.hpp"
+
+namespace facet {
+
+// One node parameter as written (after ${...} substitution); typed later against the ParamSpec.
+struct ParamSetting {
+  std::string name;
+  std::string text;      // scalar text, e.g. "5", "0.85", "out/tabletop"
+  SourceLocation where;  // of the value (of the --set option for command-line overrides)
+};
+
+// `in: {depth: median.depth}` — input port `port` is fed by `from_node`'s output `from_port`.
+struct InputBinding {
+  std::string port;
+  std::string from_node;
+  std::string from_port;
+  SourceLocation where;  // of the value "median.depth"
+};
+
+struct NodeSpec {
+  std::string id;
+  std::string stage;
+  SourceLocation where;        // of the node's key
+  SourceLocation stage_where;  // of the stage name
+  std::vector<InputBinding> inputs;
+  std::vector<ParamSetting> params;
+};
+
+struct GraphSpec {
+  std::filesystem::path file;  // as given; "<string>" for graphs parsed from memory
+  std::string name;
+  std::string variant;                            // the variant applied, empty for none
+  std::vector<std::string> variants;              // every variant the file defines
+  std::map<std::string, std::string> params;      // graph params after --param overrides
+  std::vector<std::filesystem::path> plugin_paths;  // `plugins.paths`, made absolute
+  std::vector<NodeSpec> nodes;                    // in file order
+
+  const NodeSpec* find_node(const std::string& id) const;
+};
+
+struct LoadOptions {
+  std::map<std::string, std::string> params;              // --param name=value
+  std::vector<std::pair<std::string, std::string>> sets;  // --set node.param=value, in order
+  std::string variant;                                    // --variant NAME
+};
+
+// Parses and resolves a graph file. Reports every problem it can find into `diagnostics`;
+// the result is only meaningful when diagnostics.has_errors() is false.
+GraphSpec load_graph_file(const std::filesystem::path& file, const LoadOptions& options,
+                          Diagnostics& diagnostics);
+
+// The same for YAML text held in memory; `display_name` is used in diagnostics and as the base
+// for relative paths (its parent directory).
+GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& display_name,
+                          const LoadOptions& options, Diagnostics& diagnostics);
+
+}  // namespace facet

@@ -1,0 +1,68 @@
+#pragma once
+// The stages known to this process: those registered by loaded plugins (and, in tests, those
+// registered directly), plus every plugin that failed to load and why.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "facet/plugin.hpp"
+#include "facet/stage_spec.hpp"
+
+namespace facet {
+
+struct PluginInfo {
+  std::filesystem::path file;  // empty for stages registered in-process
+  std::string name;
+  std::string version;
+  std::string sdk_version;  // "0.1.0"
+  std::string toolchain;    // fingerprint the plugin was built with
+  std::vector<std::string> stages;
+};
+
+struct LoadFailure {
+  std::filesystem::path file;
+  std::string reason;
+};
+
+struct StageEntry {
+  StageSpec spec;
+  std::shared_ptr<const PluginInfo> plugin;
+  // Keeps the plugin's shared library loaded while a stage made by it exists. Type-erased so
+  // that this header does not depend on Boost.DLL.
+  std::shared_ptr<const void> library;
+};
+
+class Registry {
+ public:
+  // Registers every stage of `stages` as coming from `plugin`. A stage name that is already
+  // registered is not replaced: a LoadFailure naming both plugin files is recorded instead.
+  void add_plugin(std::shared_ptr<const PluginInfo> plugin, const std::vector<StageSpec>& stages,
+                  std::shared_ptr<const void> library);
+
+  // In-process registration, for tests and embedders: plugin name "builtin".
+  template <class StageT>
+  void add() {
+    StageList list;
+    list.add<StageT>();
+    add_builtin(list.stages());
+  }
+  void add_builtin(const std::vector<StageSpec>& stages);
+
+  void add_failure(LoadFailure failure) { failures_.push_back(std::move(failure)); }
+
+  const StageEntry* find(std::string_view stage_name) const;
+  std::vector<std::string> stage_names() const;  // sorted
+  const std::vector<std::shared_ptr<const PluginInfo>>& plugins() const { return plugins_; }
+  const std::vector<LoadFailure>& failures() const { return failures_; }
+
+ private:
+  std::map<std::string, StageEntry, std::less<>> stages_;
+  std::vector<std::shared_ptr<const PluginInfo>> plugins_;
+  std::vector<LoadFailure> failures_;
+};
+
+}  // namespace facet

@@ -1,0 +1,74 @@
+#pragma once
+// Packet: an immutable, shared, type-erased value travelling along one edge of a graph.
+//
+// Types are identified by a stable string key ("facet.DepthImage/1"), never by typeid: typeid of
+// the same type can differ between shared libraries, and a key survives renames of the C++ type.
+// Packets share their payload, so fanning one output out to N consumers copies no image.
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace facet {
+
+// Specialise with FACET_TYPE_KEY(Type, "facet.Name/version") next to the type's definition.
+template <class T>
+struct TypeKey;
+
+#define FACET_TYPE_KEY(Type, key_literal)                   \
+  template <>                                               \
+  struct facet::TypeKey<Type> {                             \
+    static constexpr std::string_view value = key_literal;  \
+  }
+
+template <class T>
+constexpr std::string_view type_key() {
+  return TypeKey<T>::value;
+}
+
+class Packet {
+ public:
+  Packet() = default;
+
+  template <class T>
+  static Packet make(T value) {
+    return Packet(std::make_shared<const T>(std::move(value)), type_key<T>());
+  }
+
+  template <class T>
+  static Packet share(std::shared_ptr<const T> value) {
+    return Packet(std::move(value), type_key<T>());
+  }
+
+  bool empty() const noexcept { return data_ == nullptr; }
+  explicit operator bool() const noexcept { return !empty(); }
+  std::string_view type_key() const noexcept { return key_; }
+
+  // Null when empty or of another type.
+  template <class T>
+  const T* get_if() const noexcept {
+    return (data_ && key_ == facet::type_key<T>()) ? static_cast<const T*>(data_.get()) : nullptr;
+  }
+
+  // Shared ownership of the payload, or null when empty or of another type.
+  template <class T>
+  std::shared_ptr<const T> shared_as() const noexcept {
+    if (get_if<T>() == nullptr) return nullptr;
+    return std::static_pointer_cast<const T>(data_);
+  }
+
+  // Identity of the payload: two packets with the same address share one value.
+  const void* address() const noexcept { return data_.get(); }
+
+ private:
+  Packet(std::shared_ptr<const void> data, std::string_view key)
+      : data_(std::move(data)), key_(key) {}
+
+  std::shared_ptr<const void> data_;
+  // Points at a string literal with static storage (see FACET_TYPE_KEY); compared by content.
+  std::string_view key_;
+};
+
+}  // namespace facet

@@ -1,0 +1,74 @@
+#pragma once
+// Declaring a plugin: one FACET_PLUGIN block per shared library.
+//
+//   FACET_PLUGIN("my_plugin", "1.0.0") {
+//     registrar.add<MyStage>();
+//   }
+//
+// The macro exports the single C entry symbol (see plugin_abi.h) with this SDK's version and
+// toolchain fingerprint; the host checks them before it runs the block.
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "facet/plugin_abi.h"
+#include "facet/stage.hpp"
+#include "facet/version.hpp"
+
+namespace facet {
+
+class Registrar {
+ public:
+  virtual ~Registrar() = default;
+
+  template <class StageT>
+  void add() {
+    StageSpec spec = StageT::spec();
+    spec.factory([](const Params& params) -> std::unique_ptr<Stage> {
+      return std::make_unique<StageT>(params);
+    });
+    add_stage(std::move(spec));
+  }
+
+  virtual void add_stage(StageSpec spec) = 0;
+};
+
+// Collects stages in memory: used by StageRunner and tests that need no plugin file.
+class StageList final : public Registrar {
+ public:
+  void add_stage(StageSpec spec) override { stages_.push_back(std::move(spec)); }
+  const std::vector<StageSpec>& stages() const { return stages_; }
+
+ private:
+  std::vector<StageSpec> stages_;
+};
+
+}  // namespace facet
+
+#if defined(_WIN32)
+#define FACET_PLUGIN_EXPORT __declspec(dllexport)
+#else
+#define FACET_PLUGIN_EXPORT __attribute__((visibility("default")))
+#endif
+
+#define FACET_PLUGIN(plugin_name_literal, plugin_version_literal)                             \
+  static void facet_plugin_register_(::facet::Registrar& registrar);                         \
+  extern "C" FACET_PLUGIN_EXPORT const facet_plugin_header* facet_plugin_entry(void) {       \
+    static const facet_plugin_header header = {                                              \
+        FACET_PLUGIN_MAGIC,                                                                  \
+        FACET_PLUGIN_ABI_VERSION,                                                            \
+        static_cast<uint32_t>(sizeof(facet_plugin_header)),                                 \
+        FACET_SDK_VERSION_MAJOR,                                                             \
+        FACET_SDK_VERSION_MINOR,                                                             \
+        FACET_SDK_VERSION_PATCH,                                                             \
+        FACET_TOOLCHAIN_FINGERPRINT,                                                         \
+        plugin_name_literal,                                                                 \
+        plugin_version_literal,                                                              \
+        [](void* registrar) {                                                                \
+          facet_plugin_register_(*static_cast<::facet::Registrar*>(registrar));              \
+        }};                                                                                  \
+    return &header;                                                                          \
+  }                                                                                          \
+  static void facet_plugin_register_(::facet::Registrar& registrar)

@@ -1,0 +1,35 @@
+#pragma once
+// What every image-like packet carries besides its pixels: which frame it belongs to and the
+// camera that saw it.
+
+#include <cstdint>
+#include <string>
+
+namespace facet {
+
+// Pinhole intrinsics of the depth image, in pixels. Back-projection of pixel (u, v) at depth Z:
+// X = (u - cx) * Z / fx, Y = (v - cy) * Z / fy.
+struct CameraIntrinsics {
+  double fx = 0.0;
+  double fy = 0.0;
+  double cx = 0.0;
+  double cy = 0.0;
+  int width = 0;
+  int height = 0;
+
+  bool valid() const { return fx > 0.0 && fy > 0.0 && width > 0 && height > 0; }
+};
+
+struct FrameInfo {
+  std::int64_t index = 0;         // 0-based position in the stream
+  std::int64_t timestamp_ns = 0;  // capture time, or index * nominal period for recordings
+  std::string stem;               // name of the source file without extension, e.g. "learn0"
+};
+
+// Common header of every image-like type.
+struct FrameHeader {
+  FrameInfo frame;
+  CameraIntrinsics camera;
+};
+
+}  // namespace facet
