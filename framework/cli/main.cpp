@@ -1,1 +1,42 @@
-int main() { return 0; }
+// facet: run, check and inspect segmentation graphs.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "facet/sdk_version.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"facet — model-free 3D scene segmentation from depth images, as YAML graphs of "
+               "stage plugins.",
+               "facet"};
+  app.set_version_flag("--version", std::string("facet ") + FACET_SDK_VERSION_STRING);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes:\n"
+      "  0  success\n"
+      "  1  runtime failure (a stage failed while the graph ran)\n"
+      "  2  usage error (bad command line, unknown stage name)\n"
+      "  3  invalid graph (every error is printed as file:line:col: error: ...)\n"
+      "  4  plugin failure (a needed plugin failed to load; see `facet doctor`)\n\n"
+      "Plugins are searched in --plugin-path, $FACET_PLUGIN_PATH, the graph's plugins.paths,\n"
+      "next to the executable (../lib/facet/plugins) and in the install prefix.\n"
+      "Run `facet COMMAND --help` for the options of a command.");
+
+  int exit_code = facet::cli::kOk;
+  facet::cli::add_run_command(app, exit_code);
+  facet::cli::add_validate_command(app, exit_code);
+  facet::cli::add_list_command(app, exit_code);
+  facet::cli::add_inspect_command(app, exit_code);
+  facet::cli::add_dot_command(app, exit_code);
+  facet::cli::add_doctor_command(app, exit_code);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? facet::cli::kOk : facet::cli::kUsage;
+  }
+  return exit_code;
+}

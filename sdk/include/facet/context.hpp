@@ -71,6 +71,7 @@ class ProcessContext {
   void begin_frame(std::int64_t frame_index);
   std::span<Packet> inputs() { return inputs_; }
   std::span<Packet> outputs() { return outputs_; }
+  std::span<const Packet> outputs() const { return outputs_; }
   const std::vector<Metric>& metrics() const { return metrics_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
   bool at_end_of_stream() const { return end_of_stream_; }

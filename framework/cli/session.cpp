@@ -1,0 +1,96 @@
+#include "session.hpp"
+
+#include <cstdlib>
+#include <iostream>
+
+#include "exit_codes.hpp"
+#include "facet/framework/diagnostics.hpp"
+#include "facet/framework/plugin_loader.hpp"
+
+namespace facet::cli {
+namespace {
+
+// "name=value" → pair; the first '=' splits, so values may contain '='.
+std::optional<std::pair<std::string, std::string>> split_assignment(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) return std::nullopt;
+  return std::make_pair(text.substr(0, eq), text.substr(eq + 1));
+}
+
+}  // namespace
+
+void add_plugin_options(CLI::App& command, PluginOptions& options) {
+  command.add_option("--plugin-path", options.plugin_paths,
+                     "Directory searched for plugins before all others (repeatable)");
+}
+
+void add_graph_options(CLI::App& command, GraphOptions& options) {
+  command.add_option("graph", options.graph_file, "Graph file (YAML)")->required();
+  command.add_option("--param,-p", options.params,
+                     "Override a graph parameter: name=value (repeatable)");
+  command.add_option("--set,-s", options.sets,
+                     "Override a node parameter: node.param=value (repeatable, applied last)");
+  command.add_option("--variant,-V", options.variant, "Apply the variant NAME defined in the graph");
+}
+
+std::string plugin_path_environment() {
+  const char* value = std::getenv("FACET_PLUGIN_PATH");  // NOLINT(concurrency-mt-unsafe)
+  return value == nullptr ? std::string() : std::string(value);
+}
+
+Registry load_registry(const PluginOptions& plugins,
+                       const std::vector<std::filesystem::path>& graph_plugin_paths) {
+  Registry registry;
+  load_plugins(plugin_search_dirs(plugins.plugin_paths, plugin_path_environment(),
+                                  graph_plugin_paths),
+               registry);
+  return registry;
+}
+
+std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
+                                               const GraphOptions& graph_options) {
+  auto loaded = std::make_unique<LoadedGraph>();
+  Diagnostics diagnostics;
+  LoadOptions options;
+  options.variant = graph_options.variant;
+  const SourceLocation command_line{"<command line>", 0, 0};
+  for (const auto& text : graph_options.params) {
+    if (const auto kv = split_assignment(text)) {
+      options.params[kv->first] = kv->second;
+    } else {
+      diagnostics.error(command_line, "--param expects name=value, got '" + text + "'");
+    }
+  }
+  for (const auto& text : graph_options.sets) {
+    if (const auto kv = split_assignment(text)) {
+      options.sets.push_back(*kv);
+    } else {
+      diagnostics.error(command_line, "--set expects node.param=value, got '" + text + "'");
+    }
+  }
+  if (!diagnostics.has_errors()) {
+    loaded->spec = load_graph_file(graph_options.graph_file, options, diagnostics);
+  }
+  if (diagnostics.has_errors()) {
+    diagnostics.print(std::cerr);
+    loaded->exit_code = kInvalidGraph;
+    return loaded;
+  }
+
+  loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);
+  loaded->graph = validate_graph(loaded->spec, loaded->registry, diagnostics);
+  diagnostics.print(std::cerr);  // warnings too
+  if (diagnostics.has_errors()) {
+    bool missing_stage = false;
+    for (const auto& node : loaded->spec.nodes) {
+      if (loaded->registry.find(node.stage) == nullptr) missing_stage = true;
+    }
+    const bool plugin_failed = !loaded->registry.failures().empty();
+    loaded->exit_code = (missing_stage && plugin_failed) ? kPluginFailure : kInvalidGraph;
+    std::cerr << diagnostics.error_count() << " error(s) in " << graph_options.graph_file.string()
+              << "\n";
+  }
+  return loaded;
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,74 @@
+#include "facet/framework/run_report.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "facet/framework/json_writer.hpp"
+#include "facet/framework/statistics.hpp"
+
+namespace facet {
+
+void write_run_json(std::ostream& out, const RunStats& stats, const std::string& graph_name,
+                    const std::string& variant) {
+  JsonWriter json(out);
+  json.begin_object();
+  json.key("graph").value(graph_name);
+  json.key("variant").value(variant);
+  json.key("frames").value(stats.frames);
+  json.key("stages").begin_object();
+  for (const auto& node : stats.nodes) {
+    json.key(node.id).begin_object();
+    json.key("stage").value(node.stage);
+    json.key("calls").value(static_cast<std::int64_t>(node.call_ms.size()));
+    json.key("skipped").value(node.skipped);
+    json.key("median_ms").value(median(node.call_ms));
+    json.key("p95_ms").value(percentile(node.call_ms, 95.0));
+    json.key("metrics").begin_object();
+    for (const auto& [name, values] : node.metrics) {
+      const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+      json.key(name).begin_object();
+      json.key("mean").value(std::accumulate(values.begin(), values.end(), 0.0) /
+                             static_cast<double>(values.size()));
+      json.key("median").value(median(values));
+      json.key("min").value(*lo);
+      json.key("max").value(*hi);
+      json.end_object();
+    }
+    json.end_object();
+    json.end_object();
+  }
+  json.end_object();
+  const double total_median = median(stats.frame_ms);
+  json.key("total").begin_object();
+  json.key("median_ms").value(total_median);
+  json.key("p95_ms").value(percentile(stats.frame_ms, 95.0));
+  json.key("fps").value(total_median > 0.0 ? 1000.0 / total_median : 0.0);
+  json.end_object();
+  json.end_object();
+}
+
+void write_profile_table(std::ostream& out, const RunStats& stats) {
+  std::size_t id_width = 5;
+  std::size_t stage_width = 5;
+  for (const auto& node : stats.nodes) {
+    id_width = std::max(id_width, node.id.size());
+    stage_width = std::max(stage_width, node.stage.size());
+  }
+  const double total_median = median(stats.frame_ms);
+  out << fmt::format("{:<{}}  {:<{}}  {:>6}  {:>10}  {:>10}  {:>6}\n", "node", id_width, "stage",
+                     stage_width, "calls", "median ms", "p95 ms", "share");
+  for (const auto& node : stats.nodes) {
+    const double node_median = median(node.call_ms);
+    out << fmt::format("{:<{}}  {:<{}}  {:>6}  {:>10.3f}  {:>10.3f}  {:>5.1f}%\n", node.id,
+                       id_width, node.stage, stage_width, node.call_ms.size(), node_median,
+                       percentile(node.call_ms, 95.0),
+                       total_median > 0.0 ? 100.0 * node_median / total_median : 0.0);
+  }
+  out << fmt::format("{:<{}}  {:>6}  {:>10.3f}  {:>10.3f}\n", "total (per frame)",
+                     id_width + stage_width + 2, stats.frames, total_median,
+                     percentile(stats.frame_ms, 95.0));
+}
+
+}  // namespace facet
