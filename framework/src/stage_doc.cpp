@@ -107,7 +107,8 @@ void write_stage_markdown(std::ostream& out, const StageEntry& entry) {
       std::string doc = param.doc;
       std::replace(doc.begin(), doc.end(), '\n', ' ');
       out << "| `" << param.name << "` | " << to_string(param.type) << " | "
-          << (param.options.required ? "required" : "`" + format_param_value(param.default_value) + "`")
+          << (param.options.required ? std::string("required")
+                                   : fmt::format("`{}`", format_param_value(param.default_value)))
           << " | " << range_text(param) << " | " << param.options.unit << " | " << doc << " | "
           << param.options.origin << " |\n";
     }

@@ -34,12 +34,12 @@ class Packet {
 
   template <class T>
   static Packet make(T value) {
-    return Packet(std::make_shared<const T>(std::move(value)), type_key<T>());
+    return Packet(std::make_shared<const T>(std::move(value)), facet::type_key<T>());
   }
 
   template <class T>
   static Packet share(std::shared_ptr<const T> value) {
-    return Packet(std::move(value), type_key<T>());
+    return Packet(std::move(value), facet::type_key<T>());
   }
 
   bool empty() const noexcept { return data_ == nullptr; }

@@ -1,0 +1,217 @@
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "facet/framework/executor.hpp"
+#include "facet/framework/registry.hpp"
+#include "facet/types/images.hpp"
+
+namespace {
+
+// What the test stages saw; reset by each test. Stages only see their Params, so tests observe
+// them through this probe.
+struct Probe {
+  std::vector<std::string> events;                        // "open id", "close id"
+  std::map<std::string, std::vector<const void*>> seen;  // node id → payload addresses
+};
+Probe& probe() {
+  static Probe instance;
+  return instance;
+}
+
+class Counter final : public facet::Stage {
+ public:
+  static facet::StageSpec spec() {
+    return facet::StageSpec("test.counter", "Emits `frames` small depth images, then ends.")
+        .output<facet::DepthImage>("depth", "A 4x4 image whose pixels hold the frame index + 1.")
+        .param("frames", 3, "Frames to emit.", {.min = 0})
+        .param("gap_every", 0, "Leave the output empty every n-th frame (0 = never).", {.min = 0});
+  }
+  explicit Counter(const facet::Params& p)
+      : frames_(p.get_int("frames")), gap_every_(p.get_int("gap_every")) {}
+  void open(const facet::OpenContext& ctx) override { probe().events.push_back("open " + ctx.node_id); }
+  void close() override { probe().events.push_back("close counter"); }
+  void process(facet::ProcessContext& ctx) override {
+    if (ctx.frame_index() >= frames_) {
+      ctx.end_of_stream();
+      return;
+    }
+    ctx.metric("index", static_cast<double>(ctx.frame_index()));
+    if (gap_every_ > 0 && (ctx.frame_index() + 1) % gap_every_ == 0) return;  // empty output
+    facet::DepthImage image;
+    image.frame.index = ctx.frame_index();
+    image.frame.stem = "f" + std::to_string(ctx.frame_index());
+    image.depth = cv::Mat(4, 4, CV_16UC1, cv::Scalar(static_cast<double>(ctx.frame_index() + 1)));
+    ctx.output("depth", std::move(image));
+  }
+
+ private:
+  std::int64_t frames_;
+  std::int64_t gap_every_;
+};
+
+class Record final : public facet::Stage {
+ public:
+  static facet::StageSpec spec() {
+    return facet::StageSpec("test.record", "Records the payload address it receives.")
+        .input<facet::DepthImage>("depth", "Anything.")
+        .param("fail_at", -1, "Throw a StageError at this frame (-1 = never).", {.min = -1});
+  }
+  explicit Record(const facet::Params& p) : fail_at_(p.get_int("fail_at")) {}
+  void open(const facet::OpenContext& ctx) override {
+    id_ = ctx.node_id;
+    probe().events.push_back("open " + id_);
+  }
+  void close() override { probe().events.push_back("close " + id_); }
+  void process(facet::ProcessContext& ctx) override {
+    if (ctx.frame_index() == fail_at_) throw facet::StageError("deliberate failure");
+    probe().seen[ctx.node_id()].push_back(ctx.input_packet("depth").address());
+  }
+
+ private:
+  std::int64_t fail_at_;
+  std::string id_;
+};
+
+class Unbuildable final : public facet::Stage {
+ public:
+  static facet::StageSpec spec() {
+    return facet::StageSpec("test.unbuildable", "Its constructor always fails.")
+        .input<facet::DepthImage>("depth", "Anything.");
+  }
+  explicit Unbuildable(const facet::Params&) { throw facet::StageError("cannot open device"); }
+  void process(facet::ProcessContext&) override {}
+};
+
+struct NodeDesc {
+  std::string id;
+  std::string stage;
+  std::map<std::string, facet::ParamValue> params;
+  std::vector<std::string> inputs;  // "node" feeding the single input port, or empty
+};
+
+class SequentialExecutorTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    probe() = {};
+    registry_.add<Counter>();
+    registry_.add<Record>();
+    registry_.add<Unbuildable>();
+  }
+
+  // Nodes must be listed producers first (the executor takes the graph's order as given).
+  facet::ValidatedGraph graph(const std::vector<NodeDesc>& nodes) {
+    facet::ValidatedGraph g;
+    g.name = "test";
+    std::map<std::string, std::size_t> index;
+    for (const auto& desc : nodes) {
+      facet::ValidatedNode node;
+      node.id = desc.id;
+      node.stage = registry_.find(desc.stage);
+      EXPECT_NE(node.stage, nullptr) << desc.stage;
+      node.params = node.stage->spec.default_params();
+      for (const auto& [name, value] : desc.params) node.params.set(name, value);
+      for (const auto& from : desc.inputs) {
+        node.inputs.push_back(facet::Connection{index.at(from), 0});
+      }
+      node.inputs.resize(node.stage->spec.inputs().size());
+      index[desc.id] = g.nodes.size();
+      g.nodes.push_back(std::move(node));
+    }
+    return g;
+  }
+
+  facet::Registry registry_;
+};
+
+TEST_F(SequentialExecutorTest, RunsUntilTheSourceEndsTheStream) {
+  const auto g = graph({{"counter", "test.counter", {{"frames", std::int64_t{5}}}, {}},
+                        {"sink", "test.record", {}, {"counter"}}});
+  facet::SequentialExecutor executor(g);
+  const auto stats = executor.run();
+  EXPECT_EQ(stats.frames, 5);
+  EXPECT_EQ(stats.frame_ms.size(), 5u);
+  ASSERT_EQ(stats.nodes.size(), 2u);
+  EXPECT_EQ(stats.nodes[1].call_ms.size(), 5u);
+  EXPECT_EQ(probe().seen["sink"].size(), 5u);
+  EXPECT_EQ(stats.nodes[0].metrics.at("index").size(), 5u);
+  EXPECT_DOUBLE_EQ(stats.nodes[0].metrics.at("index").back(), 4.0);
+}
+
+TEST_F(SequentialExecutorTest, StopsAtMaxFrames) {
+  const auto g = graph({{"counter", "test.counter", {{"frames", std::int64_t{100}}}, {}},
+                        {"sink", "test.record", {}, {"counter"}}});
+  facet::SequentialExecutor executor(g);
+  facet::RunOptions options;
+  options.max_frames = 7;
+  std::vector<std::string> stems;
+  options.on_frame = [&](const facet::FrameEvent& e) { stems.push_back(e.stem); };
+  EXPECT_EQ(executor.run(options).frames, 7);
+  ASSERT_EQ(stems.size(), 7u);
+  EXPECT_EQ(stems.front(), "f0");
+  EXPECT_EQ(stems.back(), "f6");
+}
+
+TEST_F(SequentialExecutorTest, FanOutSharesOnePayloadAmongAllConsumers) {
+  const auto g = graph({{"counter", "test.counter", {}, {}},
+                        {"a", "test.record", {}, {"counter"}},
+                        {"b", "test.record", {}, {"counter"}},
+                        {"c", "test.record", {}, {"counter"}},
+                        {"d", "test.record", {}, {"counter"}}});
+  facet::SequentialExecutor executor(g);
+  EXPECT_EQ(executor.run().frames, 3);
+  for (std::size_t frame = 0; frame < 3; ++frame) {
+    const void* first = probe().seen["a"].at(frame);
+    EXPECT_NE(first, nullptr);
+    for (const char* id : {"b", "c", "d"}) EXPECT_EQ(probe().seen[id].at(frame), first) << id;
+  }
+}
+
+TEST_F(SequentialExecutorTest, EmptyOutputSkipsConsumersWithARequiredInput) {
+  const auto g = graph({{"counter", "test.counter", {{"frames", std::int64_t{6}}, {"gap_every", std::int64_t{2}}}, {}},
+                        {"sink", "test.record", {}, {"counter"}}});
+  facet::SequentialExecutor executor(g);
+  const auto stats = executor.run();
+  EXPECT_EQ(stats.frames, 6);
+  EXPECT_EQ(stats.nodes[1].skipped, 3);
+  EXPECT_EQ(stats.nodes[1].call_ms.size(), 3u);
+}
+
+TEST_F(SequentialExecutorTest, StageFailureNamesNodeStageAndFrameAndClosesEverything) {
+  const auto g = graph({{"counter", "test.counter", {}, {}},
+                        {"sink", "test.record", {{"fail_at", std::int64_t{1}}}, {"counter"}}});
+  facet::SequentialExecutor executor(g);
+  try {
+    executor.run();
+    FAIL() << "expected a RunError";
+  } catch (const facet::RunError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("node 'sink' (test.record)"), std::string::npos) << message;
+    EXPECT_NE(message.find("frame 1 (f1)"), std::string::npos) << message;
+    EXPECT_NE(message.find("deliberate failure"), std::string::npos) << message;
+  }
+  const std::vector<std::string> expected{"open counter", "open sink", "close sink",
+                                          "close counter"};
+  EXPECT_EQ(probe().events, expected);
+}
+
+TEST_F(SequentialExecutorTest, ConstructorFailureNamesTheNode) {
+  const auto g = graph({{"counter", "test.counter", {}, {}},
+                        {"device", "test.unbuildable", {}, {"counter"}}});
+  try {
+    facet::SequentialExecutor executor(g);
+    FAIL() << "expected a RunError";
+  } catch (const facet::RunError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("node 'device' (test.unbuildable)"), std::string::npos) << message;
+    EXPECT_NE(message.find("cannot open device"), std::string::npos) << message;
+  }
+}
+
+TEST_F(SequentialExecutorTest, AGraphWithoutSourceNeedsAFrameCount) {
+  const auto g = graph({{"sink", "test.record", {}, {}}});
+  facet::SequentialExecutor executor(g);
+  EXPECT_THROW(executor.run(), facet::RunError);
+}
+
+}  // namespace
