@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# facet quick start: install what the build needs (Debian 12), build a Release tree with the
+# `release` CMake preset (Ninja, ccache when present) and then
+#   scripts/quickstart.sh run    run the main job, graphs/tabletop.yaml, on the bundled frames
+#   scripts/quickstart.sh test   run the whole test suite (ctest over GoogleTest)
+#   scripts/quickstart.sh asan   build with AddressSanitizer + UBSan (preset `asan`) and run the suite
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$here"
+mode="${1:-run}"
+
+# Debian packages the build and the tests need.
+packages=(
+  g++ cmake ninja-build pkg-config ccache
+  libboost-dev libboost-filesystem-dev libyaml-cpp-dev libopencv-dev
+  libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+install_packages() {
+  local missing=()
+  for package in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+      missing+=("$package")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "installing: ${missing[*]}"
+  local sudo=()
+  [ "$(id -u)" -ne 0 ] && sudo=(sudo)
+  "${sudo[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends \
+    "${missing[@]}"
+}
+
+build() {
+  local preset="$1"
+  cmake --preset "$preset"
+  cmake --build --preset "$preset" -j "$(nproc)"
+}
+
+case "$mode" in
+  run)
+    install_packages
+    build release
+    build/bin/facet run graphs/tabletop.yaml --param output=out/tabletop --profile
+    echo "results: out/tabletop"
+    ;;
+  test)
+    install_packages
+    build release
+    ctest --preset release -j "$(nproc)"
+    ;;
+  asan)
+    install_packages
+    build asan
+    ctest --preset asan -j "$(nproc)"
+    ;;
+  *)
+    echo "usage: scripts/quickstart.sh run|test|asan" >&2
+    exit 2
+    ;;
+esac
