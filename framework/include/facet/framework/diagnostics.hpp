@@ -8,6 +8,9 @@
 
 namespace facet {
 
+// The file name of diagnostics about command-line options (--param, --set, --variant).
+inline constexpr const char* kCommandLineFile = "<command line>";
+
 // 1-based line and column; 0 means "unknown" (the location is then printed as `file:`).
 struct SourceLocation {
   std::string file;

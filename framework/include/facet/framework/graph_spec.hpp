@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,16 +36,24 @@ struct NodeSpec {
   SourceLocation stage_where;  // of the stage name
   std::vector<InputBinding> inputs;
   std::vector<ParamSetting> params;
+  // Of the `in:` key when the node has one, even an empty one: a source must not have it.
+  std::optional<SourceLocation> inputs_where;
+  // Set when a variant's `replace:` swapped the stage, so that port errors can say why the
+  // ports differ from the file's: the stage written in the file and the variant that replaced it.
+  std::string replaced_stage;
+  std::string replaced_by_variant;
 };
 
 struct GraphSpec {
-  std::filesystem::path file;  // as given; "<string>" for graphs parsed from memory
-  std::string name;
-  std::string variant;                            // the variant applied, empty for none
-  std::vector<std::string> variants;              // every variant the file defines
-  std::map<std::string, std::string> params;      // graph params after --param overrides
+  std::filesystem::path file;                 // as given; "<string>" for graphs parsed from memory
+  std::string name;                           // `name:`, or the file's stem when absent
+  std::string description;                    // `description:`, optional one-liner
+  std::filesystem::path graph_dir;            // absolute directory of the file: ${graph_dir}
+  std::string variant;                        // the variant applied, empty for none
+  std::vector<std::string> variants;          // every variant the file defines
+  std::map<std::string, std::string> params;  // graph params after --param overrides
   std::vector<std::filesystem::path> plugin_paths;  // `plugins.paths`, made absolute
-  std::vector<NodeSpec> nodes;                    // in file order
+  std::vector<NodeSpec> nodes;                      // in file order
 
   const NodeSpec* find_node(const std::string& id) const;
 };

@@ -1,0 +1,252 @@
+// Loading a graph file: parse, check the structure, resolve graph params, apply the selected
+// variant and --set overrides, substitute ${...} and split `node.port` references.
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "facet/framework/graph_spec.hpp"
+#include "graph_document.hpp"
+#include "graph_substitution.hpp"
+#include "graph_variants.hpp"
+#include "yaml_checks.hpp"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::ParamSubstitution;
+using detail::RawGraph;
+using detail::RawNode;
+
+constexpr const char* kGraphDirParam = "graph_dir";
+
+SourceLocation command_line() {
+  return {kCommandLineFile, 0, 0};
+}
+
+fs::path absolute_dir_of(const fs::path& file) {
+  std::error_code error;
+  fs::path absolute = fs::absolute(file, error);
+  if (error) absolute = file;
+  return absolute.lexically_normal().parent_path();
+}
+
+// Graph params: the file's defaults, then --param. Their values may use built-ins only, so that
+// the order in which params are declared never matters.
+std::map<std::string, std::string> resolve_graph_params(const RawGraph& raw,
+                                                        const fs::path& graph_dir,
+                                                        const LoadOptions& options,
+                                                        Diagnostics& diagnostics) {
+  const ParamSubstitution builtins({{kGraphDirParam, graph_dir.generic_string()}});
+  std::map<std::string, std::string> params;
+  std::vector<std::string> declared;
+  for (const auto& param : raw.params) {
+    declared.push_back(param.name);
+    if (param.name == kGraphDirParam) {
+      diagnostics.error(param.where,
+                        "graph parameter 'graph_dir' is built in and cannot be "
+                        "redefined");
+      continue;
+    }
+    params[param.name] = builtins.expand(param.text, param.where, diagnostics).value_or("");
+  }
+  for (const auto& [name, value] : options.params) {
+    const std::string option = "--param " + name + "=" + value + ": ";
+    if (params.count(name) == 0) {
+      diagnostics.error(command_line(),
+                        option + "unknown graph parameter '" + name + "'" +
+                            detail::suggestion_suffix(name, declared, "the graph declares"));
+      if (declared.empty()) {
+        diagnostics.note(command_line(), "the graph declares no parameters");
+      }
+      continue;
+    }
+    if (auto expanded = builtins.expand(value, command_line(), diagnostics)) {
+      params[name] = *expanded;
+    }
+  }
+  return params;
+}
+
+std::vector<fs::path> resolve_plugin_paths(const RawGraph& raw, const fs::path& graph_dir,
+                                           const ParamSubstitution& substitution,
+                                           Diagnostics& diagnostics) {
+  std::vector<fs::path> paths;
+  for (const auto& path : raw.plugin_paths) {
+    if (auto text = substitution.expand(path.text, path.where, diagnostics)) {
+      const fs::path given(*text);
+      paths.push_back((given.is_absolute() ? given : graph_dir / given).lexically_normal());
+    }
+  }
+  return paths;
+}
+
+void select_variant(RawGraph& raw, const std::string& variant, const std::string& file,
+                    Diagnostics& diagnostics) {
+  if (variant.empty()) return;
+  if (raw.find_variant(variant) != nullptr) {
+    detail::apply_variant(raw, variant);
+    return;
+  }
+  const auto names = raw.variant_names();
+  diagnostics.error(command_line(), "--variant " + variant + ": unknown variant '" + variant + "'" +
+                                        detail::suggestion_suffix(variant, names, ""));
+  if (names.empty()) {
+    diagnostics.note({file, 0, 0}, "the graph defines no variants");
+  } else {
+    diagnostics.note({file, 0, 0}, "the graph defines: " + detail::join(names, ", "));
+  }
+}
+
+void apply_command_line_sets(RawGraph& raw, const LoadOptions& options, Diagnostics& diagnostics) {
+  for (const auto& [key, value] : options.sets) {
+    const std::string option = "--set " + key + "=" + value + ": ";
+    const auto target = detail::split_node_param(key);
+    if (!target) {
+      diagnostics.error(command_line(), option + "expected 'node.param=value'");
+      continue;
+    }
+    RawNode* node = raw.find_node(target->first);
+    if (node == nullptr) {
+      diagnostics.error(command_line(),
+                        option + "unknown node '" + target->first + "'" +
+                            detail::suggestion_suffix(target->first, raw.node_ids(), ""));
+      continue;
+    }
+    detail::set_param(*node, {target->second, value, command_line()});
+  }
+}
+
+// `median.depth` → {median, depth}; the node id and the port must both be identifiers.
+std::optional<std::pair<std::string, std::string>> split_reference(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  if (dot == std::string::npos) return std::nullopt;
+  std::string node = text.substr(0, dot);
+  std::string port = text.substr(dot + 1);
+  if (!detail::is_identifier(node) || !detail::is_identifier(port)) return std::nullopt;
+  return std::make_pair(std::move(node), std::move(port));
+}
+
+// The final node, with ${...} substituted. What fails here is reported and left empty, so that
+// validation can still run and skip it instead of reporting the same problem again.
+NodeSpec resolve_node(const RawNode& raw, const ParamSubstitution& substitution,
+                      Diagnostics& diagnostics) {
+  NodeSpec node;
+  node.id = raw.id;
+  node.where = raw.where;
+  node.inputs_where = raw.inputs_where;
+  node.replaced_stage = raw.replaced_stage;
+  node.replaced_by_variant = raw.replaced_by_variant;
+  if (raw.stage) {
+    node.stage_where = raw.stage->where;
+    node.stage = substitution.expand(raw.stage->text, raw.stage->where, diagnostics).value_or("");
+  }
+  for (const auto& input : raw.inputs) {
+    InputBinding binding{input.port, {}, {}, input.ref.where};
+    if (auto text = substitution.expand(input.ref.text, input.ref.where, diagnostics)) {
+      if (auto reference = split_reference(*text)) {
+        binding.from_node = reference->first;
+        binding.from_port = reference->second;
+      } else {
+        diagnostics.error(input.ref.where, "malformed reference '" + *text + "' for input '" +
+                                               input.port + "' of node '" + raw.id +
+                                               "': expected 'node.port'");
+      }
+    }
+    node.inputs.push_back(std::move(binding));
+  }
+  for (const auto& param : raw.params) {
+    if (auto text = substitution.expand(param.text, param.where, diagnostics)) {
+      node.params.push_back({param.name, *text, param.where});
+    }
+  }
+  return node;
+}
+
+}  // namespace
+
+const NodeSpec* GraphSpec::find_node(const std::string& id) const {
+  const auto it =
+      std::find_if(nodes.begin(), nodes.end(), [&](const NodeSpec& n) { return n.id == id; });
+  return it == nodes.end() ? nullptr : &*it;
+}
+
+GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& display_name,
+                          const LoadOptions& options, Diagnostics& diagnostics) {
+  GraphSpec graph;
+  graph.file = display_name;
+  graph.name = display_name.stem().string();
+  graph.graph_dir = absolute_dir_of(display_name);
+  graph.variant = options.variant;
+  const std::string file = display_name.string();
+
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& error) {
+    const SourceLocation where =
+        error.mark.is_null() ? SourceLocation{file, 0, 0}
+                             : SourceLocation{file, error.mark.line + 1, error.mark.column + 1};
+    diagnostics.error(where, error.msg);
+    return graph;
+  }
+  if (root.IsNull()) {
+    diagnostics.error({file, 0, 0}, "the graph file is empty");
+    return graph;
+  }
+  if (!root.IsMap()) {
+    diagnostics.error(detail::location_of(root, file),
+                      "a graph file must be a map (facet, name, params, nodes, ...), got " +
+                          std::string(detail::kind_name(root)));
+    return graph;
+  }
+  detail::report_duplicate_keys(root, file, diagnostics);
+
+  RawGraph raw = detail::parse_graph_document(root, file, diagnostics);
+  if (raw.name) graph.name = *raw.name;
+  graph.description = raw.description;
+  graph.variants = raw.variant_names();
+  graph.params = resolve_graph_params(raw, graph.graph_dir, options, diagnostics);
+
+  auto substitutions = graph.params;
+  substitutions[kGraphDirParam] = graph.graph_dir.generic_string();
+  const ParamSubstitution substitution(std::move(substitutions));
+  graph.plugin_paths = resolve_plugin_paths(raw, graph.graph_dir, substitution, diagnostics);
+
+  detail::check_variants(raw, diagnostics);
+  select_variant(raw, options.variant, file, diagnostics);
+  apply_command_line_sets(raw, options, diagnostics);
+  for (const auto& node : raw.nodes) {
+    graph.nodes.push_back(resolve_node(node, substitution, diagnostics));
+  }
+  return graph;
+}
+
+GraphSpec load_graph_file(const std::filesystem::path& file, const LoadOptions& options,
+                          Diagnostics& diagnostics) {
+  const auto cannot_read = [&](const std::string& why) {
+    diagnostics.error({file.string(), 0, 0}, "cannot read graph file: " + why);
+    GraphSpec graph;
+    graph.file = file;
+    graph.name = file.stem().string();
+    graph.graph_dir = absolute_dir_of(file);
+    return graph;
+  };
+  std::error_code error;
+  const auto status = fs::status(file, error);
+  if (!fs::exists(status)) return cannot_read("no such file");
+  if (fs::is_directory(status)) return cannot_read("it is a directory");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return cannot_read(std::generic_category().message(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return cannot_read("read error");
+  return load_graph_text(text.str(), file, options, diagnostics);
+}
+
+}  // namespace facet

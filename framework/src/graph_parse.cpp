@@ -1,0 +1,308 @@
+#include <algorithm>
+
+#include "graph_document.hpp"
+#include "yaml_checks.hpp"
+
+namespace facet::detail {
+namespace {
+
+constexpr const char* kFormatVersion = "1";
+
+const std::vector<std::string> kTopLevelKeys = {"facet",   "name",  "description", "params",
+                                                "plugins", "nodes", "variants"};
+const std::vector<std::string> kNodeKeys = {"stage", "in", "params"};
+const std::vector<std::string> kVariantKeys = {"extends", "replace", "set"};
+const std::vector<std::string> kPluginsKeys = {"paths"};
+
+std::string in_quotes(const std::string& text) {
+  return "'" + text + "'";
+}
+
+// Reads one document; holds the file name and the diagnostics so that each step stays short.
+class DocumentReader {
+ public:
+  DocumentReader(std::string file, Diagnostics& diagnostics)
+      : file_(std::move(file)), diagnostics_(diagnostics) {}
+
+  RawGraph read(const YAML::Node& root) {
+    RawGraph graph;
+    bool has_version = false;
+    bool has_nodes = false;
+    for (const auto& entry : map_entries(root, file_, diagnostics_)) {
+      if (entry.key == "facet") {
+        has_version = true;
+        check_version(entry);
+      } else if (entry.key == "name") {
+        if (auto text = scalar(entry, "'name'")) graph.name = text->text;
+      } else if (entry.key == "description") {
+        if (auto text = scalar(entry, "'description'")) graph.description = text->text;
+      } else if (entry.key == "params") {
+        graph.params = settings(entry, "'params'", /*check_names=*/true);
+      } else if (entry.key == "plugins") {
+        graph.plugin_paths = plugin_paths(entry);
+      } else if (entry.key == "nodes") {
+        has_nodes = true;
+        graph.nodes = nodes(entry);
+      } else if (entry.key == "variants") {
+        graph.variants = variants(entry);
+      } else {
+        report_unknown_key(entry, "the graph", kTopLevelKeys, diagnostics_);
+      }
+    }
+    const SourceLocation top = location_of(root, file_);
+    if (!has_version) {
+      diagnostics_.error(top, "missing key 'facet' (the format version: 'facet: 1')");
+    }
+    if (!has_nodes) diagnostics_.error(top, "missing key 'nodes'");
+    return graph;
+  }
+
+ private:
+  SourceLocation value_where(const MapEntry& entry) const {
+    // An empty value ("stage:") has no useful mark of its own: point at its key.
+    if (entry.value.IsNull()) return entry.key_where;
+    return location_of(entry.value, file_);
+  }
+
+  std::optional<RawText> scalar(const MapEntry& entry, const std::string& what) {
+    const SourceLocation where = value_where(entry);
+    if (!expect_scalar(entry.value, where, what, diagnostics_)) return std::nullopt;
+    return RawText{entry.value.Scalar(), where};
+  }
+
+  void check_version(const MapEntry& entry) {
+    const auto version = scalar(entry, "'facet' (the format version)");
+    if (version && version->text != kFormatVersion) {
+      diagnostics_.error(version->where, "unsupported graph format version '" + version->text +
+                                             "'; this facet reads 'facet: " + kFormatVersion + "'");
+    }
+  }
+
+  bool map_value(const MapEntry& entry, const std::string& what) {
+    return expect_map(entry.value, value_where(entry), what, diagnostics_);
+  }
+
+  // A map of name: scalar (graph params, node params).
+  std::vector<ParamSetting> settings(const MapEntry& entry, const std::string& what,
+                                     bool check_names) {
+    std::vector<ParamSetting> out;
+    if (!map_value(entry, what)) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      if (check_names && !is_identifier(item.key)) {
+        diagnostics_.error(item.key_where, "invalid parameter name " + in_quotes(item.key) +
+                                               ": use letters, digits and '_'");
+        continue;
+      }
+      if (auto text = scalar(item, "parameter " + in_quotes(item.key))) {
+        out.push_back({item.key, text->text, text->where});
+      }
+    }
+    return out;
+  }
+
+  std::vector<RawText> plugin_paths(const MapEntry& entry) {
+    std::vector<RawText> out;
+    if (!map_value(entry, "'plugins'")) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      if (item.key != "paths") {
+        report_unknown_key(item, "'plugins'", kPluginsKeys, diagnostics_);
+        continue;
+      }
+      if (!expect_sequence(item.value, value_where(item), "'plugins.paths'", diagnostics_)) {
+        continue;
+      }
+      for (const auto& path : item.value) {
+        const SourceLocation where = location_of(path, file_);
+        if (expect_scalar(path, where, "a plugin path", diagnostics_)) {
+          out.push_back({path.Scalar(), where});
+        }
+      }
+    }
+    return out;
+  }
+
+  std::vector<RawInput> inputs(const MapEntry& entry, const std::string& what) {
+    std::vector<RawInput> out;
+    if (!map_value(entry, what)) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      if (auto ref = scalar(item, "input " + in_quotes(item.key))) out.push_back({item.key, *ref});
+    }
+    return out;
+  }
+
+  std::vector<RawNode> nodes(const MapEntry& entry) {
+    std::vector<RawNode> out;
+    if (!map_value(entry, "'nodes'")) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      if (!is_identifier(item.key)) {
+        diagnostics_.error(item.key_where,
+                           "invalid node id " + in_quotes(item.key) +
+                               ": use letters, digits and '_', not starting with a digit");
+        continue;
+      }
+      out.push_back(node(item));
+    }
+    if (out.empty() && entry.value.IsMap()) {
+      diagnostics_.error(entry.key_where, "the graph has no nodes");
+    }
+    return out;
+  }
+
+  RawNode node(const MapEntry& entry) {
+    RawNode node;
+    node.id = entry.key;
+    node.where = entry.key_where;
+    const std::string what = "node " + in_quotes(node.id);
+    if (!map_value(entry, what)) return node;
+    bool has_stage = false;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      if (item.key == "stage") {
+        has_stage = true;
+        node.stage = scalar(item, "'stage' of " + what);
+      } else if (item.key == "in") {
+        node.inputs_where = item.key_where;
+        node.inputs = inputs(item, "'in' of " + what);
+      } else if (item.key == "params") {
+        node.params = settings(item, "'params' of " + what, /*check_names=*/false);
+      } else {
+        report_unknown_key(item, what, kNodeKeys, diagnostics_);
+      }
+    }
+    if (!has_stage) diagnostics_.error(node.where, what + " has no 'stage'");
+    return node;
+  }
+
+  std::vector<RawVariant> variants(const MapEntry& entry) {
+    std::vector<RawVariant> out;
+    if (!map_value(entry, "'variants'")) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      out.push_back(variant(item));
+    }
+    return out;
+  }
+
+  RawVariant variant(const MapEntry& entry) {
+    RawVariant variant;
+    variant.name = entry.key;
+    variant.where = entry.key_where;
+    const std::string what = "variant " + in_quotes(variant.name);
+    if (!map_value(entry, what)) return variant;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      if (item.key == "extends") {
+        variant.extends = extends(item, "'extends' of " + what);
+      } else if (item.key == "replace") {
+        variant.replaces = replaces(item, "'replace' of " + what);
+      } else if (item.key == "set") {
+        variant.sets = sets(item, "'set' of " + what);
+      } else {
+        report_unknown_key(item, what, kVariantKeys, diagnostics_);
+      }
+    }
+    return variant;
+  }
+
+  std::vector<RawText> extends(const MapEntry& entry, const std::string& what) {
+    std::vector<RawText> out;
+    if (entry.value.IsSequence()) {
+      for (const auto& name : entry.value) {
+        const SourceLocation where = location_of(name, file_);
+        if (expect_scalar(name, where, "a variant name in " + what, diagnostics_)) {
+          out.push_back({name.Scalar(), where});
+        }
+      }
+    } else if (auto name = scalar(entry, what + " (a variant name or a list of them)")) {
+      out.push_back(*name);
+    }
+    return out;
+  }
+
+  std::vector<RawReplace> replaces(const MapEntry& entry, const std::string& what) {
+    std::vector<RawReplace> out;
+    if (!map_value(entry, what)) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      RawReplace replace;
+      replace.node = item.key;
+      replace.where = item.key_where;
+      const std::string node_what = "replacement of node " + in_quotes(item.key);
+      if (!map_value(item, node_what)) continue;
+      for (const auto& part : map_entries(item.value, file_, diagnostics_)) {
+        if (part.key == "stage") {
+          replace.stage = scalar(part, "'stage' of " + node_what);
+        } else if (part.key == "in") {
+          replace.inputs_where = part.key_where;
+          replace.inputs = inputs(part, "'in' of " + node_what);
+        } else if (part.key == "params") {
+          replace.params = settings(part, "'params' of " + node_what, /*check_names=*/false);
+        } else {
+          report_unknown_key(part, node_what, kNodeKeys, diagnostics_);
+        }
+      }
+      out.push_back(std::move(replace));
+    }
+    return out;
+  }
+
+  std::vector<RawSet> sets(const MapEntry& entry, const std::string& what) {
+    std::vector<RawSet> out;
+    if (!map_value(entry, what)) return out;
+    for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+      const auto target = split_node_param(item.key);
+      if (!target) {
+        diagnostics_.error(item.key_where, "malformed key " + in_quotes(item.key) + " in " + what +
+                                               ": expected 'node.param'");
+        continue;
+      }
+      if (auto text = scalar(item, "parameter " + in_quotes(item.key))) {
+        out.push_back({target->first, item.key_where, {target->second, text->text, text->where}});
+      }
+    }
+    return out;
+  }
+
+  std::string file_;
+  Diagnostics& diagnostics_;
+};
+
+}  // namespace
+
+RawNode* RawGraph::find_node(const std::string& id) {
+  const auto it =
+      std::find_if(nodes.begin(), nodes.end(), [&](const RawNode& n) { return n.id == id; });
+  return it == nodes.end() ? nullptr : &*it;
+}
+
+const RawVariant* RawGraph::find_variant(const std::string& variant_name) const {
+  const auto it = std::find_if(variants.begin(), variants.end(),
+                               [&](const RawVariant& v) { return v.name == variant_name; });
+  return it == variants.end() ? nullptr : &*it;
+}
+
+std::vector<std::string> RawGraph::node_ids() const {
+  std::vector<std::string> ids;
+  for (const auto& node : nodes)
+    ids.push_back(node.id);
+  return ids;
+}
+
+std::vector<std::string> RawGraph::variant_names() const {
+  std::vector<std::string> names;
+  for (const auto& variant : variants)
+    names.push_back(variant.name);
+  return names;
+}
+
+RawGraph parse_graph_document(const YAML::Node& root, const std::string& file,
+                              Diagnostics& diagnostics) {
+  return DocumentReader(file, diagnostics).read(root);
+}
+
+std::optional<std::pair<std::string, std::string>> split_node_param(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  if (dot == std::string::npos) return std::nullopt;
+  std::string node = text.substr(0, dot);
+  std::string param = text.substr(dot + 1);
+  if (!is_identifier(node) || param.empty()) return std::nullopt;
+  return std::make_pair(std::move(node), std::move(param));
+}
+
+}  // namespace facet::detail

@@ -1,0 +1,132 @@
+#include "yaml_checks.hpp"
+
+#include <map>
+
+namespace facet::detail {
+
+SourceLocation location_of(const YAML::Node& node, const std::string& file) {
+  const YAML::Mark mark = node.Mark();
+  if (mark.is_null()) return {file, 0, 0};
+  return {file, mark.line + 1, mark.column + 1};
+}
+
+std::string_view kind_name(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Scalar:
+      return "a scalar";
+    case YAML::NodeType::Null:
+    case YAML::NodeType::Undefined:
+      return "nothing";
+  }
+  return "nothing";
+}
+
+void report_duplicate_keys(const YAML::Node& root, const std::string& file,
+                           Diagnostics& diagnostics) {
+  if (root.IsSequence()) {
+    for (const auto& item : root)
+      report_duplicate_keys(item, file, diagnostics);
+    return;
+  }
+  if (!root.IsMap()) return;
+  std::map<std::string, SourceLocation> first_seen;
+  for (const auto& entry : root) {
+    if (entry.first.IsScalar()) {
+      const SourceLocation where = location_of(entry.first, file);
+      const auto [it, inserted] = first_seen.emplace(entry.first.Scalar(), where);
+      if (!inserted) {
+        diagnostics.error(where, "duplicate key '" + entry.first.Scalar() +
+                                     "' (first defined at line " + std::to_string(it->second.line) +
+                                     ")");
+      }
+    }
+    report_duplicate_keys(entry.second, file, diagnostics);
+  }
+}
+
+std::vector<MapEntry> map_entries(const YAML::Node& map, const std::string& file,
+                                  Diagnostics& diagnostics) {
+  std::vector<MapEntry> entries;
+  if (!map.IsMap()) return entries;
+  for (const auto& entry : map) {
+    const SourceLocation where = location_of(entry.first, file);
+    if (!entry.first.IsScalar()) {
+      diagnostics.error(
+          where, std::string("a key must be a scalar, got ") + std::string(kind_name(entry.first)));
+      continue;
+    }
+    const std::string key = entry.first.Scalar();
+    bool repeated = false;
+    for (const auto& seen : entries)
+      repeated = repeated || seen.key == key;
+    if (!repeated) entries.push_back({key, where, entry.second});
+  }
+  return entries;
+}
+
+namespace {
+
+bool expect_kind(bool ok, const YAML::Node& node, const SourceLocation& where,
+                 std::string_view what, std::string_view expected, Diagnostics& diagnostics) {
+  if (!ok) {
+    diagnostics.error(where, std::string(what) + " must be " + std::string(expected) + ", got " +
+                                 std::string(kind_name(node)));
+  }
+  return ok;
+}
+
+}  // namespace
+
+bool expect_map(const YAML::Node& node, const SourceLocation& where, std::string_view what,
+                Diagnostics& diagnostics) {
+  return expect_kind(node.IsMap(), node, where, what, "a map", diagnostics);
+}
+
+bool expect_scalar(const YAML::Node& node, const SourceLocation& where, std::string_view what,
+                   Diagnostics& diagnostics) {
+  return expect_kind(node.IsScalar(), node, where, what, "a scalar", diagnostics);
+}
+
+bool expect_sequence(const YAML::Node& node, const SourceLocation& where, std::string_view what,
+                     Diagnostics& diagnostics) {
+  return expect_kind(node.IsSequence(), node, where, what, "a list", diagnostics);
+}
+
+std::string suggestion_suffix(const std::string& name, const std::vector<std::string>& candidates,
+                              std::string_view fallback_label) {
+  const std::string guess = did_you_mean(name, candidates);
+  if (!guess.empty()) return "; did you mean '" + guess + "'?";
+  if (fallback_label.empty() || candidates.empty()) return {};
+  return "; " + std::string(fallback_label) + ": " + join(candidates, ", ");
+}
+
+void report_unknown_key(const MapEntry& entry, std::string_view context,
+                        const std::vector<std::string>& allowed, Diagnostics& diagnostics) {
+  diagnostics.error(entry.key_where, "unknown key '" + entry.key + "' in " + std::string(context) +
+                                         suggestion_suffix(entry.key, allowed, "expected one of"));
+}
+
+bool is_identifier(std::string_view text) {
+  const auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (text.empty() || !(alpha(text.front()) || text.front() == '_')) return false;
+  for (const char c : text) {
+    if (!(alpha(c) || digit(c) || c == '_')) return false;
+  }
+  return true;
+}
+
+std::string join(const std::vector<std::string>& items, std::string_view separator) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  return out;
+}
+
+}  // namespace facet::detail
