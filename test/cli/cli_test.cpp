@@ -1,0 +1,88 @@
+// The commands that describe things: --help, list, inspect, doctor, validate, dot.
+
+#include <gtest/gtest.h>
+
+#include "cli_runner.hpp"
+
+namespace facet::test {
+namespace {
+
+TEST(Cli, HelpDocumentsCommandsAndExitCodes) {
+  const auto result = run_cli("--help");
+  EXPECT_EQ(result.exit_code, 0);
+  for (const char* word : {"run", "validate", "list", "inspect", "dot", "doctor", "Exit codes",
+                           "invalid graph", "plugin failure"}) {
+    EXPECT_NE(result.out.find(word), std::string::npos) << word << "\n" << result.out;
+  }
+}
+
+TEST(Cli, UsageErrorsExitWith2) {
+  EXPECT_EQ(run_cli("").exit_code, 2);
+  EXPECT_EQ(run_cli("frobnicate").exit_code, 2);
+  EXPECT_EQ(run_cli("run").exit_code, 2);  // graph missing
+  EXPECT_EQ(run_cli("run x.yaml --frames=-3").exit_code, 2);
+}
+
+TEST(Cli, ListShowsBundledStagesWithoutAnyEnvironment) {
+  const auto result = run_cli("list", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  for (const char* stage : {"io.frames", "io.labels", "io.depth", "filter.median"}) {
+    EXPECT_NE(result.out.find(stage), std::string::npos) << stage << "\n" << result.out;
+  }
+}
+
+TEST(Cli, InspectDocumentsEveryStageAndParameter) {
+  const auto all = run_cli("inspect --all");
+  ASSERT_EQ(all.exit_code, 0) << all.out;
+  const auto median = run_cli("inspect filter.median");
+  ASSERT_EQ(median.exit_code, 0) << median.out;
+  for (const char* text : {"filter.median", "concurrency:", "inputs:", "outputs:", "parameters:",
+                           "size", "facet.DepthImage/1", "default", "px"}) {
+    EXPECT_NE(median.out.find(text), std::string::npos) << text << "\n" << median.out;
+  }
+}
+
+TEST(Cli, InspectUnknownStageSuggestsTheClosestName) {
+  const auto result = run_cli("inspect filter.medain");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("did you mean 'filter.median'"), std::string::npos) << result.out;
+}
+
+TEST(Cli, DoctorListsSearchPathAndPlugins) {
+  const auto result = run_cli("doctor", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  for (const char* text : {"plugin search path", "executable", "install prefix", "facet_io",
+                           "facet_filters", "toolchain", "load failures: none"}) {
+    EXPECT_NE(result.out.find(text), std::string::npos) << text << "\n" << result.out;
+  }
+}
+
+TEST(Cli, ValidateAcceptsTheShippedGraph) {
+  const auto result = run_cli("validate " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("is valid"), std::string::npos) << result.out;
+}
+
+TEST(Cli, InvalidGraphExitsWith3AndPointsAtTheLine) {
+  TempDir dir("facet-cli-invalid");
+  const auto graph = dir.path() / "broken.yaml";
+  std::ofstream(graph) << "facet: 1\nname: broken\nnodes:\n"
+                          "  source: {stage: io.frames, params: {path: data}}\n"
+                          "  median: {stage: filter.median, in: {depth: source.depth}, "
+                          "params: {size: 4}}\n";
+  const auto result = run_cli("validate " + shell_quote(graph.string()));
+  EXPECT_EQ(result.exit_code, 3) << result.out;
+  EXPECT_NE(result.out.find("broken.yaml:5:"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("error:"), std::string::npos) << result.out;
+}
+
+TEST(Cli, DotPrintsNodesAndTypedEdges) {
+  const auto result = run_cli("dot " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("digraph"), std::string::npos);
+  EXPECT_NE(result.out.find("\"source\" -> \"median\""), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("facet.DepthImage/1"), std::string::npos) << result.out;
+}
+
+}  // namespace
+}  // namespace facet::test

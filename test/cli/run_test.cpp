@@ -1,0 +1,106 @@
+// `facet run` end to end: the main job on the bundled frames, statistics, overrides, failures.
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli_runner.hpp"
+
+namespace facet::test {
+namespace {
+
+const std::filesystem::path kTabletop = source_dir() / "graphs/tabletop.yaml";
+
+std::size_t count_pngs(const std::filesystem::path& dir) {
+  std::size_t n = 0;
+  if (!std::filesystem::is_directory(dir)) return 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() == ".png") ++n;
+  }
+  return n;
+}
+
+TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
+  TempDir out("facet-run-tabletop");
+  const auto json = out.path() / "stats.json";
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " --param output=" +
+                              shell_quote(out.path().string()) + " --json " +
+                              shell_quote(json.string()) + " --profile");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+
+  const auto inputs = count_pngs(source_dir() / "data/mosd/depth");
+  ASSERT_GT(inputs, 0u);
+  EXPECT_EQ(count_pngs(out.path() / "depth"), inputs);
+
+  // A written frame is a 16-bit depth image of the input's size.
+  for (const auto& entry : std::filesystem::directory_iterator(out.path() / "depth")) {
+    const cv::Mat image = cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED);
+    EXPECT_EQ(image.type(), CV_16UC1) << entry.path();
+    EXPECT_EQ(image.cols, 640);
+    EXPECT_EQ(image.rows, 480);
+  }
+
+  const std::string stats = read_file(json);
+  EXPECT_NE(stats.find("\"frames\": " + std::to_string(inputs)), std::string::npos) << stats;
+  for (const char* key : {"\"stages\"", "\"source\"", "\"median\"", "\"median_ms\"", "\"p95_ms\"",
+                          "\"total\""}) {
+    EXPECT_NE(stats.find(key), std::string::npos) << key << "\n" << stats;
+  }
+  // --profile prints the per-stage table.
+  EXPECT_NE(result.out.find("p95 ms"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("filter.median"), std::string::npos) << result.out;
+}
+
+TEST(Run, FramesOptionLimitsTheRun) {
+  TempDir out("facet-run-frames");
+  const auto json = out.path() / "stats.json";
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 2 --param output=" +
+                              shell_quote(out.path().string()) + " --json " + shell_quote(json.string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(count_pngs(out.path() / "depth"), 2u);
+  EXPECT_NE(read_file(json).find("\"frames\": 2"), std::string::npos);
+}
+
+TEST(Run, SetOverridesANodeParameter) {
+  TempDir out("facet-run-set");
+  const auto bad = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 1 --set median.size=4 --param output=" +
+                           shell_quote(out.path().string()));
+  EXPECT_EQ(bad.exit_code, 3) << bad.out;
+  EXPECT_NE(bad.out.find("size"), std::string::npos) << bad.out;
+  const auto good = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 1 --set median.size=3 --param output=" +
+                            shell_quote(out.path().string()));
+  EXPECT_EQ(good.exit_code, 0) << good.out;
+}
+
+TEST(Run, MissingInputFolderIsARuntimeFailureNamingIt) {
+  TempDir out("facet-run-missing");
+  const auto missing = out.path() / "no-such-dataset";
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " --param input=" +
+                              shell_quote(missing.string()) + " --param output=" +
+                              shell_quote(out.path().string()));
+  EXPECT_EQ(result.exit_code, 1) << result.out;
+  EXPECT_NE(result.out.find("no-such-dataset"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("source"), std::string::npos) << result.out;
+}
+
+TEST(Run, UnknownGraphParamIsAnInvalidGraph) {
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " --param inptu=x");
+  EXPECT_EQ(result.exit_code, 3) << result.out;
+  EXPECT_NE(result.out.find("did you mean 'input'"), std::string::npos) << result.out;
+}
+
+TEST(Run, MissingPluginIsAPluginFailure) {
+  TempDir dir("facet-run-plugin");
+  // A plugin file that is not a shared library: it fails to load, and its stage is missing.
+  std::filesystem::create_directories(dir.path() / "plugins");
+  std::ofstream(dir.path() / "plugins/libfacet_broken.so") << "not an ELF file";
+  const auto graph = dir.path() / "g.yaml";
+  std::ofstream(graph) << "facet: 1\nname: g\nnodes:\n  cam: {stage: io.camera}\n";
+  const auto result = run_cli("run " + shell_quote(graph.string()) + " --plugin-path " +
+                              shell_quote((dir.path() / "plugins").string()));
+  EXPECT_EQ(result.exit_code, 4) << result.out;
+  EXPECT_NE(result.out.find("libfacet_broken.so"), std::string::npos) << result.out;
+}
+
+}  // namespace
+}  // namespace facet::test
