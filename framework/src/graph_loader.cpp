@@ -118,7 +118,7 @@ void apply_command_line_sets(RawGraph& raw, const LoadOptions& options, Diagnost
                             detail::suggestion_suffix(target->first, raw.node_ids(), ""));
       continue;
     }
-    detail::set_param(*node, {target->second, value, command_line()});
+    detail::set_param(*node, {target->second, value, command_line(), true});
   }
 }
 
@@ -161,9 +161,8 @@ NodeSpec resolve_node(const RawNode& raw, const ParamSubstitution& substitution,
     node.inputs.push_back(std::move(binding));
   }
   for (const auto& param : raw.params) {
-    if (auto text = substitution.expand(param.text, param.where, diagnostics)) {
-      node.params.push_back({param.name, *text, param.where});
-    }
+    auto text = substitution.expand(param.text, param.where, diagnostics);
+    node.params.push_back({param.name, text.value_or(param.text), param.where, text.has_value()});
   }
   return node;
 }

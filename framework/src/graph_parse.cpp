@@ -94,7 +94,7 @@ class DocumentReader {
         continue;
       }
       if (auto text = scalar(item, "parameter " + in_quotes(item.key))) {
-        out.push_back({item.key, text->text, text->where});
+        out.push_back({item.key, text->text, text->where, true});
       }
     }
     return out;
@@ -253,7 +253,8 @@ class DocumentReader {
         continue;
       }
       if (auto text = scalar(item, "parameter " + in_quotes(item.key))) {
-        out.push_back({target->first, item.key_where, {target->second, text->text, text->where}});
+        out.push_back(
+            {target->first, item.key_where, {target->second, text->text, text->where, true}});
       }
     }
     return out;

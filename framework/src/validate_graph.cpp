@@ -94,7 +94,13 @@ class GraphValidator {
                                                             "its parameters are")));
         continue;
       }
-      const std::string what = "parameter " + in_quotes(setting.name) + " of node " +
+      if (!setting.resolved) continue;  // the loader reported it
+      // A --set option has no line to point at: repeat the option instead.
+      const std::string option =
+          setting.where.file == kCommandLineFile
+              ? "--set " + spec.id + "." + setting.name + "=" + setting.text + ": "
+              : std::string();
+      const std::string what = option + "parameter " + in_quotes(setting.name) + " of node " +
                                in_quotes(spec.id) + " (" + std::string(to_string(param->type)) +
                                "): ";
       auto parsed = parse_param_value(*param, setting.text);

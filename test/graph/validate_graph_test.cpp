@@ -137,7 +137,8 @@ TEST_F(ValidateGraph, CommandLineSetIsTypedToo) {
       "filter.median, in: {depth: s.depth}}\n",
       options);
   EXPECT_EQ(single_error(diagnostics_),
-            "<command line>: parameter 'size' of node 'm' (int): expected an integer, got 'big'");
+            "<command line>: --set m.size=big: parameter 'size' of node 'm' (int): expected an "
+            "integer, got 'big'");
 }
 
 TEST_F(ValidateGraph, UnknownPortsAndNodesSuggestNames) {

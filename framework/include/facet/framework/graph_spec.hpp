@@ -19,6 +19,9 @@ struct ParamSetting {
   std::string name;
   std::string text;      // scalar text, e.g. "5", "0.85", "out/tabletop"
   SourceLocation where;  // of the value (of the --set option for command-line overrides)
+  // False when the loader could not resolve the value (an undefined ${...}) and has said so:
+  // validation then counts the parameter as set but does not check it again.
+  bool resolved = true;
 };
 
 // `in: {depth: median.depth}` — input port `port` is fed by `from_node`'s output `from_port`.
@@ -65,7 +68,8 @@ struct LoadOptions {
 };
 
 // Parses and resolves a graph file. Reports every problem it can find into `diagnostics`;
-// the result is only meaningful when diagnostics.has_errors() is false.
+// the result is only meaningful when diagnostics.has_errors() is false. It may still be passed to
+// validate_graph, which skips what the loader rejected, so that one run reports every problem.
 GraphSpec load_graph_file(const std::filesystem::path& file, const LoadOptions& options,
                           Diagnostics& diagnostics);
 
