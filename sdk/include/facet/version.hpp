@@ -1,6 +1,10 @@
 #pragma once
 // SDK version and the toolchain fingerprint that plugin and host must share.
 
+// <version> pulls in the standard library configuration, which defines the ABI macros tested below;
+// without it the fingerprint would depend on what the including file happened to include first.
+#include <version>
+
 #include "facet/sdk_version.h"  // generated: FACET_SDK_VERSION_{MAJOR,MINOR,PATCH}
 
 #define FACET_STRINGIFY_IMPL(x) #x
