@@ -53,7 +53,7 @@ std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
   Diagnostics diagnostics;
   LoadOptions options;
   options.variant = graph_options.variant;
-  const SourceLocation command_line{"<command line>", 0, 0};
+  const SourceLocation command_line{kCommandLineFile, 0, 0};
   for (const auto& text : graph_options.params) {
     if (const auto kv = split_assignment(text)) {
       options.params[kv->first] = kv->second;
@@ -68,15 +68,9 @@ std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
       diagnostics.error(command_line, "--set expects node.param=value, got '" + text + "'");
     }
   }
-  if (!diagnostics.has_errors()) {
-    loaded->spec = load_graph_file(graph_options.graph_file, options, diagnostics);
-  }
-  if (diagnostics.has_errors()) {
-    diagnostics.print(std::cerr);
-    loaded->exit_code = kInvalidGraph;
-    return loaded;
-  }
-
+  loaded->spec = load_graph_file(graph_options.graph_file, options, diagnostics);
+  // Validation runs even after loading errors (it skips what the loader already reported), so a
+  // user sees every problem of the file at once, like a compiler.
   loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);
   loaded->graph = validate_graph(loaded->spec, loaded->registry, diagnostics);
   diagnostics.print(std::cerr);  // warnings too
