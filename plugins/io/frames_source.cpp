@@ -1,0 +1,146 @@
+#include "io/frames_source.hpp"
+
+#include <opencv2/core.hpp>
+
+#include "io/frame_listing.hpp"
+#include "io/intrinsics_file.hpp"
+#include "io/png_files.hpp"
+
+namespace fs = std::filesystem;
+
+namespace facet::io {
+
+StageSpec FramesSource::spec() {
+  return StageSpec("io.frames",
+                   "Reads depth frames (and ground-truth labels) from a dataset folder.\n"
+                   "A dataset folder DIR holds intrinsics.yaml, depth/*.png (16-bit, mm, "
+                   "0 = invalid) and optionally label/*.png with the same stems. Frames are "
+                   "read in natural order of their names (learn2 before learn10). Instead of a "
+                   "folder, 'path' may be a glob of depth PNGs such as DIR/depth/learn*.png; "
+                   "then DIR is the dataset folder. Ends the stream after the last frame "
+                   "unless 'loop' is set. Reports the metric valid_ratio (valid pixels / all).")
+      .output<DepthImage>("depth",
+                          "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
+                          "file stem, timestamp and camera intrinsics.")
+      .output<LabelImage>("labels",
+                          "Ground-truth segment ids, CV_32SC1 (0 = background); an "
+                          "empty packet for frames without a label file.")
+      .param("path", "data/mosd",
+             "Dataset folder, or a glob of depth PNGs (wildcards * and ? in the file name).",
+             {.required = true})
+      .param("intrinsics", "",
+             "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = "
+             "<dataset folder>/intrinsics.yaml.",
+             {.origin = "dataset format, see docs/data-formats.md"})
+      .param("labels_dir", "label",
+             "Folder of ground-truth label PNGs, relative to the dataset folder (or absolute); "
+             "e.g. label_parts for part-level labels. A missing folder means no ground truth.",
+             {.origin = "dataset format, see docs/data-formats.md"})
+      .param("on_error", "fail",
+             "What to do with an unusable frame (unreadable, not 16-bit, wrong size): fail "
+             "stops the run with an error naming the file; skip warns and goes on.",
+             {.choices = {std::string("fail"), std::string("skip")},
+              .origin = "fail: a damaged recording should not pass unnoticed"})
+      .param("start", 0, "Index of the first frame, in natural order.",
+             {.unit = "frames", .min = 0.0})
+      .param("stride", 1, "Read every stride-th frame from start on.",
+             {.unit = "frames", .min = 1.0})
+      .param("loop", false, "Start again from 'start' after the last frame instead of ending.")
+      .param("fps", 30.0, "Nominal frame rate; timestamps are frame index / fps.",
+             {.unit = "Hz",
+              .min = 0.001,
+              .max = 10000.0,
+              .origin = "the 30 Hz of Kinect-type and Xtion depth cameras"})
+      .concurrency(Concurrency::serial);
+}
+
+FramesSource::FramesSource(const Params& params)
+    : path_(params.get_string("path")),
+      intrinsics_param_(params.get_string("intrinsics")),
+      labels_dir_param_(params.get_string("labels_dir")),
+      on_error_(params.get_string("on_error") == "skip" ? OnError::skip : OnError::fail),
+      start_(params.get_int("start")),
+      stride_(params.get_int("stride")),
+      loop_(params.get_bool("loop")),
+      fps_hz_(params.get_double("fps")) {}
+
+void FramesSource::open(const OpenContext& /*ctx*/) {
+  const FrameListing listing = list_frames(path_);
+  const fs::path intrinsics_file =
+      intrinsics_param_.empty() ? listing.root / "intrinsics.yaml" : fs::path(intrinsics_param_);
+  camera_ = read_intrinsics(intrinsics_file);
+
+  const auto count = static_cast<std::int64_t>(listing.depth_files.size());
+  if (start_ >= count) {
+    throw StageError("param start=" + std::to_string(start_) + " but '" + path_ + "' has only " +
+                     std::to_string(count) + " frames");
+  }
+  schedule_.clear();
+  for (std::int64_t i = start_; i < count; i += stride_) {
+    schedule_.push_back(listing.depth_files[static_cast<std::size_t>(i)]);
+  }
+
+  const fs::path labels_dir = fs::path(labels_dir_param_).is_absolute()
+                                  ? fs::path(labels_dir_param_)
+                                  : listing.root / labels_dir_param_;
+  std::error_code error;
+  labels_dir_ =
+      !labels_dir_param_.empty() && fs::is_directory(labels_dir, error) ? labels_dir : fs::path();
+  next_ = 0;
+  emitted_ = 0;
+  emitted_in_pass_ = 0;
+}
+
+void FramesSource::read_frame(const fs::path& depth_file, DepthImage& depth,
+                              LabelImage& labels) const {
+  depth.depth = read_depth_png(depth_file, camera_);
+  if (labels_dir_.empty()) return;
+  const fs::path label_file = labels_dir_ / depth_file.filename();
+  std::error_code error;
+  if (!fs::exists(label_file, error)) return;
+  labels.labels = read_label_png(label_file, camera_);
+  double max_label = 0.0;
+  cv::minMaxLoc(labels.labels, nullptr, &max_label);
+  labels.count = static_cast<std::int32_t>(max_label);
+}
+
+void FramesSource::process(ProcessContext& ctx) {
+  while (true) {
+    if (next_ >= schedule_.size()) {
+      // A pass in which every frame was skipped would loop forever: end instead.
+      if (!loop_ || emitted_in_pass_ == 0) {
+        ctx.end_of_stream();
+        return;
+      }
+      next_ = 0;
+      emitted_in_pass_ = 0;
+    }
+    const fs::path& depth_file = schedule_[next_++];
+
+    FrameHeader header;
+    header.camera = camera_;
+    header.frame.index = emitted_;
+    header.frame.stem = depth_file.stem().string();
+    header.frame.timestamp_ns =
+        static_cast<std::int64_t>(static_cast<double>(emitted_) * 1e9 / fps_hz_);
+    DepthImage depth{header, {}};
+    LabelImage labels{header, {}, 0};
+    try {
+      read_frame(depth_file, depth, labels);
+    } catch (const StageError& error) {
+      if (on_error_ == OnError::fail) throw;
+      ctx.warn(std::string("skipped frame: ") + error.what());
+      continue;
+    }
+
+    const double pixels = static_cast<double>(depth.depth.total());
+    ctx.metric("valid_ratio", static_cast<double>(cv::countNonZero(depth.depth)) / pixels);
+    ctx.output("depth", std::move(depth));
+    if (!labels.labels.empty()) ctx.output("labels", std::move(labels));
+    ++emitted_;
+    ++emitted_in_pass_;
+    return;
+  }
+}
+
+}  // namespace facet::io

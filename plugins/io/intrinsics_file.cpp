@@ -1,0 +1,66 @@
+#include "io/intrinsics_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "facet/error.hpp"
+
+namespace facet::io {
+namespace {
+
+// yaml-cpp marks are 0-based; editors count from 1.
+std::string location(const std::filesystem::path& file, const YAML::Mark& mark) {
+  if (mark.is_null()) return file.string();
+  return file.string() + ":" + std::to_string(mark.line + 1) + ":" +
+         std::to_string(mark.column + 1);
+}
+
+template <class T>
+T required_number(const std::filesystem::path& file, const YAML::Node& root, const char* key,
+                  const char* expected) {
+  const YAML::Node node = root[key];
+  if (!node) {
+    throw StageError(file.string() + ": missing key '" + key + "' (expected " + expected + ")");
+  }
+  try {
+    return node.as<T>();
+  } catch (const YAML::Exception&) {
+    const std::string text = node.IsScalar() ? "'" + node.Scalar() + "'" : "a non-scalar value";
+    throw StageError(location(file, node.Mark()) + ": key '" + key + "' must be " + expected +
+                     ", got " + text);
+  }
+}
+
+}  // namespace
+
+CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) {
+    throw StageError("intrinsics file '" + file.string() +
+                     "' not found (needed for the frame size and for back-projection; set "
+                     "param 'intrinsics')");
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file.string());
+  } catch (const YAML::Exception& e) {
+    throw StageError(location(file, e.mark) + ": not valid YAML: " + e.msg);
+  }
+  if (!root.IsMap())
+    throw StageError(file.string() + ": expected a map of fx, fy, cx, cy, width, height");
+
+  CameraIntrinsics camera;
+  camera.fx = required_number<double>(file, root, "fx", "a focal length in pixels");
+  camera.fy = required_number<double>(file, root, "fy", "a focal length in pixels");
+  camera.cx = required_number<double>(file, root, "cx", "a principal point x in pixels");
+  camera.cy = required_number<double>(file, root, "cy", "a principal point y in pixels");
+  camera.width = required_number<int>(file, root, "width", "an image width in pixels");
+  camera.height = required_number<int>(file, root, "height", "an image height in pixels");
+  if (!camera.valid()) {
+    throw StageError(file.string() + ": fx, fy, width and height must all be positive");
+  }
+  return camera;
+}
+
+}  // namespace facet::io

@@ -1,0 +1,22 @@
+#pragma once
+// io.labels: writes segment ids as 16-bit PNGs, the format of the datasets' ground truth.
+
+#include <filesystem>
+
+#include "facet/stage.hpp"
+
+namespace facet::io {
+
+class LabelsSink final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit LabelsSink(const Params& params);
+
+  void open(const OpenContext& ctx) override;
+  void process(ProcessContext& ctx) override;
+
+ private:
+  std::filesystem::path dir_;
+};
+
+}  // namespace facet::io

@@ -1,0 +1,12 @@
+// The io plugin: stages that read recorded frames from disk and write results back.
+#include "facet/plugin.hpp"
+
+#include "io/depth_sink.hpp"
+#include "io/frames_source.hpp"
+#include "io/labels_sink.hpp"
+
+FACET_PLUGIN("facet_io", "0.1.0") {
+  registrar.add<facet::io::FramesSource>();
+  registrar.add<facet::io::LabelsSink>();
+  registrar.add<facet::io::DepthSink>();
+}

@@ -1,0 +1,88 @@
+#include "io/png_files.hpp"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+#include "facet/error.hpp"
+
+namespace facet::io {
+namespace {
+
+std::string quoted(const std::filesystem::path& file) {
+  return "'" + file.string() + "'";
+}
+
+std::string size_text(int width, int height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// IMREAD_UNCHANGED keeps 16 bits; the default flags would squash the image to 8-bit colour.
+cv::Mat read_unchanged(const std::filesystem::path& file) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) {
+    throw StageError("cannot read " + quoted(file) + ": file not found");
+  }
+  cv::Mat image;
+  try {
+    image = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception& e) {
+    throw StageError("cannot read " + quoted(file) + ": " + e.what());
+  }
+  if (image.empty()) {
+    throw StageError("cannot read " + quoted(file) +
+                     ": not a readable image (truncated, corrupt "
+                     "or not a PNG)");
+  }
+  return image;
+}
+
+void check_size(const std::filesystem::path& file, const cv::Mat& image,
+                const CameraIntrinsics& camera) {
+  if (image.cols != camera.width || image.rows != camera.height) {
+    throw StageError(quoted(file) + " is " + size_text(image.cols, image.rows) +
+                     " but the intrinsics say " + size_text(camera.width, camera.height));
+  }
+}
+
+}  // namespace
+
+cv::Mat read_depth_png(const std::filesystem::path& file, const CameraIntrinsics& camera) {
+  cv::Mat image = read_unchanged(file);
+  if (image.channels() != 1) {
+    throw StageError(quoted(file) + " has " + std::to_string(image.channels()) +
+                     " channels; depth must be a single-channel 16-bit PNG in millimetres");
+  }
+  if (image.depth() != CV_16U) {
+    const bool eight_bit = image.depth() == CV_8U;
+    throw StageError(quoted(file) + (eight_bit ? " is 8-bit" : " is not 16-bit unsigned") +
+                     "; depth must be a 16-bit PNG in millimetres (an 8-bit image cannot hold "
+                     "depth; was it saved as a preview?)");
+  }
+  check_size(file, image, camera);
+  return image;
+}
+
+cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics& camera) {
+  const cv::Mat image = read_unchanged(file);
+  if (image.channels() != 1 || (image.depth() != CV_16U && image.depth() != CV_8U)) {
+    throw StageError(quoted(file) + ": labels must be a single-channel 8- or 16-bit PNG");
+  }
+  check_size(file, image, camera);
+  cv::Mat labels;
+  image.convertTo(labels, CV_32S);
+  return labels;
+}
+
+void write_png_u16(const std::filesystem::path& file, const cv::Mat& image) {
+  CV_Assert(image.type() == CV_16UC1);
+  bool written = false;
+  try {
+    written = cv::imwrite(file.string(), image);
+  } catch (const cv::Exception& e) {
+    throw StageError("cannot write " + quoted(file) + ": " + e.what());
+  }
+  if (!written) throw StageError("cannot write " + quoted(file));
+}
+
+}  // namespace facet::io

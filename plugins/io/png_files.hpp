@@ -1,0 +1,23 @@
+#pragma once
+// Reading and writing the 16-bit PNGs of the dataset format (see docs/data-formats.md).
+// Every function throws facet::StageError naming the file and what is wrong with it.
+
+#include <filesystem>
+#include <opencv2/core/mat.hpp>
+
+#include "facet/types/frame.hpp"
+
+namespace facet::io {
+
+// A depth PNG: single-channel 16-bit, millimetres, 0 = invalid, of the camera's size.
+// Returns CV_16UC1.
+cv::Mat read_depth_png(const std::filesystem::path& file, const CameraIntrinsics& camera);
+
+// A label PNG: single-channel 8- or 16-bit, 0 = background, of the camera's size.
+// Returns CV_32SC1.
+cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics& camera);
+
+// Writes a CV_16UC1 image as a 16-bit PNG.
+void write_png_u16(const std::filesystem::path& file, const cv::Mat& image);
+
+}  // namespace facet::io
