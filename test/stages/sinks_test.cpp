@@ -1,0 +1,146 @@
+// io.depth and io.labels: what they write reads back identically, also through io.frames.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "facet/testing/stage_runner.hpp"
+#include "facet/types/images.hpp"
+#include "io/depth_sink.hpp"
+#include "io/frames_source.hpp"
+#include "io/labels_sink.hpp"
+#include "stage_test_support.hpp"
+
+namespace {
+
+using facet::DepthImage;
+using facet::LabelImage;
+using facet::Packet;
+using facet::test::expect_stage_error;
+using facet::test::intrinsics_yaml;
+using facet::test::TempDir;
+using facet::test::write_text;
+
+facet::FrameHeader header(const std::string& stem, std::int64_t index = 0) {
+  facet::FrameHeader h;
+  h.frame.stem = stem;
+  h.frame.index = index;
+  return h;
+}
+
+cv::Mat read_unchanged(const std::filesystem::path& file) {
+  return cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+}
+
+bool equal(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() && a.type() == b.type() && cv::countNonZero(a != b) == 0;
+}
+
+cv::Mat random_depth_mm(int width, int height) {
+  cv::Mat depth(height, width, CV_16UC1);
+  cv::RNG rng(7);
+  rng.fill(depth, cv::RNG::UNIFORM, 0, 65536);
+  return depth;
+}
+
+TEST(DepthSink, MillimetresRoundTripIntoANewNestedFolder) {
+  TempDir dir;
+  const auto out = dir / "a/b/depth";
+  facet::testing::StageRunner<facet::io::DepthSink> sink({{"dir", out.string()}});
+  const cv::Mat depth = random_depth_mm(31, 17);
+  sink.set_input("depth", Packet::make(DepthImage{header("learn7"), depth}));
+  sink.run();
+  EXPECT_TRUE(equal(read_unchanged(out / "learn7.png"), depth));
+}
+
+TEST(DepthSink, MetresAreRoundedAndInvalidBecomesZero) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::DepthSink> sink({{"dir", dir.path().string()}});
+  cv::Mat metres(1, 5, CV_32FC1);
+  metres.at<float>(0, 0) = 0.5004F;
+  metres.at<float>(0, 1) = 1.2346F;
+  metres.at<float>(0, 2) = std::numeric_limits<float>::quiet_NaN();
+  metres.at<float>(0, 3) = 70.0F;  // does not fit 16-bit millimetres
+  metres.at<float>(0, 4) = -1.0F;
+  sink.set_input("depth", Packet::make(DepthImage{header("", 42), metres}));
+  sink.run();
+  const cv::Mat written = read_unchanged(dir / "frame_000042.png");
+  ASSERT_EQ(written.type(), CV_16UC1);
+  EXPECT_EQ(written.at<std::uint16_t>(0, 0), 500);
+  EXPECT_EQ(written.at<std::uint16_t>(0, 1), 1235);
+  EXPECT_EQ(written.at<std::uint16_t>(0, 2), 0);
+  EXPECT_EQ(written.at<std::uint16_t>(0, 3), 0);
+  EXPECT_EQ(written.at<std::uint16_t>(0, 4), 0);
+  ASSERT_EQ(sink.warnings().size(), 1U);
+  EXPECT_NE(sink.warnings()[0].find("65.535 m"), std::string::npos);
+}
+
+TEST(LabelsSink, WritesUint16AndSkipsEmptyPackets) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", (dir / "labels").string()}});
+  cv::Mat labels(4, 6, CV_32SC1, cv::Scalar(0));
+  labels.at<std::int32_t>(1, 2) = 65535;
+  labels.at<std::int32_t>(3, 5) = 3;
+  sink.set_input("labels", Packet::make(LabelImage{header("scene"), labels, 65535}));
+  sink.run();
+  const cv::Mat written = read_unchanged(dir / "labels/scene.png");
+  ASSERT_EQ(written.type(), CV_16UC1);
+  cv::Mat back;
+  written.convertTo(back, CV_32S);
+  EXPECT_TRUE(equal(back, labels));
+
+  sink.set_input("labels", Packet{});
+  sink.run();
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir / "labels"),
+                          std::filesystem::directory_iterator()),
+            1);
+}
+
+TEST(LabelsSink, RejectsIdsA16BitPngCannotHold) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", dir.path().string()}});
+  cv::Mat labels(2, 2, CV_32SC1, cv::Scalar(1));
+  labels.at<std::int32_t>(0, 1) = 65536;
+  sink.set_input("labels", Packet::make(LabelImage{header("big"), labels, 65536}));
+  expect_stage_error([&] { sink.run(); }, {"big.png", "65536", "65535"});
+  EXPECT_FALSE(std::filesystem::exists(dir / "big.png"));
+
+  labels.at<std::int32_t>(0, 1) = -2;
+  sink.set_input("labels", Packet::make(LabelImage{header("neg"), labels, 1}));
+  expect_stage_error([&] { sink.run(); }, {"neg.png", "negative"});
+}
+
+TEST(LabelsSink, FolderThatCannotBeCreatedIsAnOpenError) {
+  TempDir dir;
+  write_text(dir / "occupied", "a file, not a folder");
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", (dir / "occupied").string()}});
+  sink.set_input("labels", Packet{});
+  expect_stage_error([&] { sink.run(); }, {"occupied"});
+}
+
+// What the sinks write is a dataset that io.frames reads back unchanged.
+TEST(SinksAndSource, WrittenDatasetReadsBackThroughIoFrames) {
+  TempDir dir;
+  write_text(dir / "intrinsics.yaml", intrinsics_yaml(31, 17));
+  const cv::Mat depth = random_depth_mm(31, 17);
+  cv::Mat labels(17, 31, CV_32SC1, cv::Scalar(0));
+  labels(cv::Rect(3, 4, 10, 5)).setTo(1);
+  labels(cv::Rect(20, 2, 5, 9)).setTo(2);
+  {
+    facet::testing::StageRunner<facet::io::DepthSink> depth_sink(
+        {{"dir", (dir / "depth").string()}});
+    facet::testing::StageRunner<facet::io::LabelsSink> label_sink(
+        {{"dir", (dir / "label").string()}});
+    depth_sink.set_input("depth", Packet::make(DepthImage{header("x"), depth}));
+    label_sink.set_input("labels", Packet::make(LabelImage{header("x"), labels, 2}));
+    depth_sink.run();
+    label_sink.run();
+  }
+  facet::testing::StageRunner<facet::io::FramesSource> source({{"path", dir.path().string()}});
+  source.run();
+  EXPECT_TRUE(equal(source.output<DepthImage>("depth").depth, depth));
+  EXPECT_TRUE(equal(source.output<LabelImage>("labels").labels, labels));
+  EXPECT_EQ(source.output<LabelImage>("labels").count, 2);
+}
+
+}  // namespace

@@ -1,0 +1,86 @@
+#pragma once
+// Helpers shared by the stage tests: temporary folders, tiny datasets, error checks.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <string_view>
+
+#include "facet/error.hpp"
+
+namespace facet::test {
+
+inline std::filesystem::path data_dir() {
+  return std::filesystem::path(FACET_TEST_DATA_DIR);
+}
+
+// A fresh folder under the system temp folder, removed with everything in it at scope exit.
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
+    path_ = std::filesystem::temp_directory_path() /
+            ("facet_stage_test_" + std::to_string(ticks) + "_" + std::to_string(counter++));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+inline void write_png(const std::filesystem::path& file, const cv::Mat& image) {
+  std::filesystem::create_directories(file.parent_path());
+  ASSERT_TRUE(cv::imwrite(file.string(), image)) << file;
+}
+
+inline std::string intrinsics_yaml(int width, int height) {
+  return "# test camera\nfx: 500.0\nfy: 500.0\ncx: " + std::to_string(width / 2) +
+         "\ncy: " + std::to_string(height / 2) + "\nwidth: " + std::to_string(width) +
+         "\nheight: " + std::to_string(height) + "\n";
+}
+
+// A depth image whose every pixel encodes the frame number, so tests can tell frames apart.
+inline cv::Mat depth_mm(int width, int height, std::uint16_t value) {
+  return cv::Mat(height, width, CV_16UC1, cv::Scalar(value));
+}
+
+// Runs `action` and checks that it throws facet::StageError whose message contains every part.
+inline void expect_stage_error(const std::function<void()>& action,
+                               std::initializer_list<std::string_view> parts) {
+  try {
+    action();
+    ADD_FAILURE() << "expected facet::StageError";
+  } catch (const StageError& error) {
+    const std::string message = error.what();
+    for (const std::string_view part : parts) {
+      EXPECT_NE(message.find(part), std::string::npos)
+          << "message \"" << message << "\" does not contain \"" << part << "\"";
+    }
+  }
+}
+
+}  // namespace facet::test
