@@ -1,0 +1,40 @@
+#include "depth_threshold.hpp"
+
+#include <facet/types/images.hpp>
+#include <opencv2/core.hpp>
+
+namespace facet_template {
+
+facet::StageSpec DepthThreshold::spec() {
+  return facet::StageSpec("template.threshold",
+                          "Sets depth beyond `max` to 0 (no measurement).\n"
+                          "Reports `kept_ratio`: the share of measured pixels that were kept.")
+      .input<facet::DepthImage>("depth", "CV_16UC1 depth in millimetres.")
+      .output<facet::DepthImage>("depth", "The input with far pixels set to 0.")
+      .param("max", 1250, "Farthest depth kept.", {.unit = "mm", .min = 0, .max = 65535})
+      // No state between frames and process() only reads members: several frames may run
+      // through one instance at once.
+      .concurrency(facet::Concurrency::reentrant);
+}
+
+DepthThreshold::DepthThreshold(const facet::Params& params) : max_mm_(params.get_double("max")) {}
+
+void DepthThreshold::process(facet::ProcessContext& ctx) {
+  const auto& input = ctx.input<facet::DepthImage>("depth");
+  if (!input.in_millimetres()) {
+    // StageError is for problems the user can fix; the executor adds node, stage and frame.
+    throw facet::StageError("expects CV_16UC1 depth in millimetres");
+  }
+  // Packets are immutable: copy the header, then write a new image rather than the input's.
+  facet::DepthImage output = input;
+  output.depth = input.depth.clone();
+  output.depth.setTo(0, input.depth > max_mm_);
+
+  const int measured = cv::countNonZero(input.depth);
+  if (measured > 0) {
+    ctx.metric("kept_ratio", static_cast<double>(cv::countNonZero(output.depth)) / measured);
+  }
+  ctx.output("depth", std::move(output));
+}
+
+}  // namespace facet_template
