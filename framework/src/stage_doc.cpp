@@ -49,8 +49,8 @@ std::string indented(const std::string& text, const std::string& indent) {
 
 std::string describe_param(const ParamSpec& param) {
   std::string text = std::string(to_string(param.type));
-  text += param.options.required ? ", required"
-                                 : ", default " + format_param_value(param.default_value);
+  const std::string value = format_param_value(param.default_value);
+  text += param.options.required ? ", required" : ", default " + (value.empty() ? "\"\"" : value);
   if (const auto range = range_text(param); !range.empty()) text += ", " + range;
   if (!param.options.unit.empty()) text += ", unit " + param.options.unit;
   return text;
