@@ -1,0 +1,29 @@
+#pragma once
+// Normals from the cross product of two tangents spanned by neighbours at distance r
+// (the kernel behind normals.cross).
+
+#include <opencv2/core/mat.hpp>
+
+#include "normals/depth_space.hpp"
+
+namespace facet::normals {
+
+// Which neighbours span the tangents of pixel p = (x, y).
+//   paper:   the paper's (Fig. 2) triangle A = (x-r, y-r), B = (x+r, y-r), C = (x, y+r);
+//            n = (B - A) x (C - A). Not centred on p: its centroid is r/3 above p.
+//   centred: n = ((x+r, y) - (x-r, y)) x ((x, y+r) - (x, y-r)); symmetric about p.
+enum class Triangle { paper, centred };
+
+struct CrossOptions {
+  int radius_px = 2;
+  Triangle triangle = Triangle::paper;
+};
+
+// normals: CV_32FC3 unit normals of z (CV_32FC1, NaN = invalid) in the space of `grid`, oriented
+// towards the camera (metric: n . p < 0 at the pixel's point p; image: negative third
+// component). NaN where the pixel or any neighbour used is invalid, and within r of the border.
+// `normals` is (re)allocated to z's size.
+void cross_normals(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options,
+                   cv::Mat& normals);
+
+}  // namespace facet::normals
