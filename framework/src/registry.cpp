@@ -21,7 +21,7 @@ void Registry::add_plugin(std::shared_ptr<const PluginInfo> plugin,
                              "; the second was ignored"});
       continue;
     }
-    stages_.emplace(spec.name(), StageEntry{spec, plugin, library});
+    stages_.emplace(spec.name(), StageEntry{library, spec, plugin});
   }
   plugins_.push_back(std::move(plugin));
 }

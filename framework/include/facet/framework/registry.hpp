@@ -29,11 +29,12 @@ struct LoadFailure {
 };
 
 struct StageEntry {
+  // Keeps the plugin's shared library loaded while a stage made by it exists. Type-erased so
+  // that this header does not depend on Boost.DLL. Declared first so that it is destroyed last:
+  // `spec` holds a factory whose code lives in the library.
+  std::shared_ptr<const void> library;
   StageSpec spec;
   std::shared_ptr<const PluginInfo> plugin;
-  // Keeps the plugin's shared library loaded while a stage made by it exists. Type-erased so
-  // that this header does not depend on Boost.DLL.
-  std::shared_ptr<const void> library;
 };
 
 class Registry {
