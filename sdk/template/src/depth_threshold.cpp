@@ -7,17 +7,17 @@ namespace facet_template {
 
 facet::StageSpec DepthThreshold::spec() {
   return facet::StageSpec("template.threshold",
-                          "Sets depth beyond `max` to 0 (no measurement).\n"
+                          "Sets depth beyond `max_mm` to 0 (no measurement).\n"
                           "Reports `kept_ratio`: the share of measured pixels that were kept.")
       .input<facet::DepthImage>("depth", "CV_16UC1 depth in millimetres.")
       .output<facet::DepthImage>("depth", "The input with far pixels set to 0.")
-      .param("max", 1250, "Farthest depth kept.", {.unit = "mm", .min = 0, .max = 65535})
+      .param("max_mm", 1250, "Farthest depth kept.", {.unit = "mm", .min = 0, .max = 65535})
       // No state between frames and process() only reads members: several frames may run
       // through one instance at once.
       .concurrency(facet::Concurrency::reentrant);
 }
 
-DepthThreshold::DepthThreshold(const facet::Params& params) : max_mm_(params.get_double("max")) {}
+DepthThreshold::DepthThreshold(const facet::Params& params) : max_mm_(params.get_double("max_mm")) {}
 
 void DepthThreshold::process(facet::ProcessContext& ctx) {
   const auto& input = ctx.input<facet::DepthImage>("depth");
