@@ -56,7 +56,7 @@ void DepthSink::process(ProcessContext& ctx) {
   const auto& input = ctx.input<DepthImage>("depth");
   const std::filesystem::path file = frame_file(dir_, input.frame);
   if (input.depth.type() == CV_16UC1) {
-    write_png_u16(file, input.depth);
+    write_png(file, input.depth);
     return;
   }
   if (input.depth.type() != CV_32FC1) {
@@ -68,7 +68,7 @@ void DepthSink::process(ProcessContext& ctx) {
     ctx.warn(std::to_string(converted.out_of_range) + " pixels beyond 65.535 m written as 0 in '" +
              file.string() + "'");
   }
-  write_png_u16(file, converted.depth_mm);
+  write_png(file, converted.depth_mm);
 }
 
 }  // namespace facet::io

@@ -55,7 +55,7 @@ void LabelsSink::process(ProcessContext& ctx) {
   }
   cv::Mat ids;
   labels.convertTo(ids, CV_16U);
-  write_png_u16(file, ids);
+  write_png(file, ids);
 }
 
 }  // namespace facet::io

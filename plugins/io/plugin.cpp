@@ -2,6 +2,7 @@
 #include "facet/plugin.hpp"
 
 #include "io/depth_sink.hpp"
+#include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"
 #include "io/labels_sink.hpp"
 
@@ -9,4 +10,5 @@ FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::FramesSource>();
   registrar.add<facet::io::LabelsSink>();
   registrar.add<facet::io::DepthSink>();
+  registrar.add<facet::io::EdgesSink>();
 }

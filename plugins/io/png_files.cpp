@@ -74,8 +74,8 @@ cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics
   return labels;
 }
 
-void write_png_u16(const std::filesystem::path& file, const cv::Mat& image) {
-  CV_Assert(image.type() == CV_16UC1);
+void write_png(const std::filesystem::path& file, const cv::Mat& image) {
+  CV_Assert(image.type() == CV_16UC1 || image.type() == CV_8UC1 || image.type() == CV_8UC3);
   bool written = false;
   try {
     written = cv::imwrite(file.string(), image);

@@ -17,7 +17,7 @@ cv::Mat read_depth_png(const std::filesystem::path& file, const CameraIntrinsics
 // Returns CV_32SC1.
 cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics& camera);
 
-// Writes a CV_16UC1 image as a 16-bit PNG.
-void write_png_u16(const std::filesystem::path& file, const cv::Mat& image);
+// Writes a CV_16UC1 (16-bit), CV_8UC1 (8-bit grey) or CV_8UC3 (BGR colour) image as a PNG.
+void write_png(const std::filesystem::path& file, const cv::Mat& image);
 
 }  // namespace facet::io

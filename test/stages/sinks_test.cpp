@@ -7,6 +7,7 @@
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
 #include "io/depth_sink.hpp"
+#include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"
 #include "io/labels_sink.hpp"
 #include "stage_test_support.hpp"
@@ -141,6 +142,56 @@ TEST(SinksAndSource, WrittenDatasetReadsBackThroughIoFrames) {
   EXPECT_TRUE(equal(source.output<DepthImage>("depth").depth, depth));
   EXPECT_TRUE(equal(source.output<LabelImage>("labels").labels, labels));
   EXPECT_EQ(source.output<LabelImage>("labels").count, 2);
+}
+
+}  // namespace
+
+namespace {
+
+facet::EdgeImage edge_image(const std::string& stem) {
+  facet::EdgeImage edges;
+  edges.frame.stem = stem;
+  edges.score = (cv::Mat_<float>(1, 4) << 0.0f, 0.5f, 1.0f, std::numeric_limits<float>::quiet_NaN());
+  edges.mask = (cv::Mat_<std::uint8_t>(1, 4) << 255, 255, 0, 255);
+  return edges;
+}
+
+TEST(EdgesSink, WritesTheMaskAs8Bit) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::EdgesSink> sink({{"dir", (dir / "edges").string()}});
+  sink.set_input("edges", Packet::make(edge_image("scene")));
+  sink.run();
+  const cv::Mat written = read_unchanged(dir / "edges/scene.png");
+  ASSERT_EQ(written.type(), CV_8UC1);
+  EXPECT_TRUE(equal(written, edge_image("scene").mask));
+}
+
+TEST(EdgesSink, WritesTheScoreScaledWithNaNAsZero) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::EdgesSink> sink(
+      {{"dir", dir.path().string()}, {"what", std::string("score")}});
+  sink.set_input("edges", Packet::make(edge_image("s")));
+  sink.run();
+  const cv::Mat written = read_unchanged(dir / "s.png");
+  ASSERT_EQ(written.type(), CV_8UC1);
+  EXPECT_EQ(written.at<std::uint8_t>(0, 0), 0);
+  EXPECT_EQ(written.at<std::uint8_t>(0, 1), 128);
+  EXPECT_EQ(written.at<std::uint8_t>(0, 2), 255);
+  EXPECT_EQ(written.at<std::uint8_t>(0, 3), 0);
+}
+
+TEST(EdgesSink, AMissingMaskIsAnErrorNamingTheFile) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::EdgesSink> sink({{"dir", dir.path().string()}});
+  facet::EdgeImage edges = edge_image("m");
+  edges.mask = cv::Mat();
+  sink.set_input("edges", Packet::make(edges));
+  try {
+    sink.run();
+    FAIL() << "expected a StageError";
+  } catch (const facet::StageError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.png"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

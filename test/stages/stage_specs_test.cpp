@@ -4,6 +4,7 @@
 #include "facet/plugin.hpp"
 #include "filters/median_filter.hpp"
 #include "io/depth_sink.hpp"
+#include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"
 #include "io/labels_sink.hpp"
 
@@ -14,6 +15,7 @@ std::vector<facet::StageSpec> all_specs() {
   list.add<facet::io::FramesSource>();
   list.add<facet::io::LabelsSink>();
   list.add<facet::io::DepthSink>();
+  list.add<facet::io::EdgesSink>();
   list.add<facet::filters::MedianFilter>();
   return list.stages();
 }
@@ -39,7 +41,7 @@ TEST(StageSpecs, EveryPortAndParameterIsDocumented) {
 
 TEST(StageSpecs, NamesKindsAndConcurrency) {
   const auto specs = all_specs();
-  ASSERT_EQ(specs.size(), 4U);
+  ASSERT_EQ(specs.size(), 5U);
   EXPECT_EQ(specs[0].name(), "io.frames");
   EXPECT_TRUE(specs[0].is_source());
   EXPECT_EQ(specs[0].concurrency(), facet::Concurrency::serial);
@@ -47,9 +49,11 @@ TEST(StageSpecs, NamesKindsAndConcurrency) {
   EXPECT_EQ(specs[1].name(), "io.labels");
   EXPECT_TRUE(specs[1].outputs().empty());
   EXPECT_EQ(specs[2].name(), "io.depth");
-  EXPECT_EQ(specs[3].name(), "filter.median");
-  EXPECT_EQ(specs[3].concurrency(), facet::Concurrency::clonable);
-  EXPECT_EQ(specs[3].find_param("size")->options.choices.size(), 2U);
+  EXPECT_EQ(specs[3].name(), "io.edges");
+  EXPECT_TRUE(specs[3].outputs().empty());
+  EXPECT_EQ(specs[4].name(), "filter.median");
+  EXPECT_EQ(specs[4].concurrency(), facet::Concurrency::clonable);
+  EXPECT_EQ(specs[4].find_param("size")->options.choices.size(), 2U);
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+#include "io/edges_sink.hpp"
+
+#include <opencv2/core.hpp>
+
+#include "facet/types/images.hpp"
+#include "io/output_folder.hpp"
+#include "io/png_files.hpp"
+
+namespace facet::io {
+
+StageSpec EdgesSink::spec() {
+  return StageSpec("io.edges",
+                   "Writes edge images as <dir>/<stem>.png, 8-bit.\n"
+                   "With what = mask: 255 = edge, 0 = surface. With what = score: the edge score "
+                   "clamped to [0, 1] and scaled to 0..255, so smooth surfaces are bright and "
+                   "creases dark.")
+      .input<EdgeImage>("edges", "Edge score (CV_32FC1) and mask (CV_8UC1, 255 = edge).")
+      .param("dir", "out/edges", "Output folder, created if missing.", {.required = true})
+      .param("what", "mask", "Which image to write.",
+             {.choices = {std::string("mask"), std::string("score")},
+              .origin = "mask: the binary decision later stages use"})
+      .concurrency(Concurrency::serial);
+}
+
+EdgesSink::EdgesSink(const Params& params)
+    : dir_(params.get_string("dir")), write_score_(params.get_string("what") == "score") {}
+
+void EdgesSink::open(const OpenContext& /*ctx*/) {
+  ensure_folder(dir_);
+}
+
+void EdgesSink::process(ProcessContext& ctx) {
+  const auto& edges = ctx.input<EdgeImage>("edges");
+  const std::filesystem::path file = frame_file(dir_, edges.frame);
+  const cv::Mat& source = write_score_ ? edges.score : edges.mask;
+  if (source.empty()) {
+    throw StageError("cannot write '" + file.string() + "': the edge image has no " +
+                     (write_score_ ? "score" : "mask"));
+  }
+  if (!write_score_) {
+    if (source.type() != CV_8UC1) {
+      throw StageError("cannot write '" + file.string() + "': the edge mask must be CV_8UC1");
+    }
+    write_png(file, source);
+    return;
+  }
+  if (source.type() != CV_32FC1) {
+    throw StageError("cannot write '" + file.string() + "': the edge score must be CV_32FC1");
+  }
+  cv::Mat scaled;
+  // NaN scores (which a correct edge stage never emits) would be undefined in convertTo: map to 0.
+  cv::Mat clean = source.clone();
+  cv::patchNaNs(clean, 0.0);
+  clean.convertTo(scaled, CV_8UC1, 255.0);  // saturating: < 0 → 0, > 1 → 255
+  write_png(file, scaled);
+}
+
+}  // namespace facet::io

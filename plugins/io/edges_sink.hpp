@@ -1,0 +1,24 @@
+#pragma once
+// io.edges: writes edge maps as 8-bit PNGs, the binary decision or the score, for a person to look
+// at and for side-by-side comparisons of edge detectors (the paper's Fig. 6).
+
+#include <filesystem>
+
+#include "facet/stage.hpp"
+
+namespace facet::io {
+
+class EdgesSink final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit EdgesSink(const Params& params);
+
+  void open(const OpenContext& ctx) override;
+  void process(ProcessContext& ctx) override;
+
+ private:
+  std::filesystem::path dir_;
+  bool write_score_;
+};
+
+}  // namespace facet::io
