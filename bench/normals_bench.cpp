@@ -1,0 +1,148 @@
+// Benchmarks of the normal stages on a real frame, one thread, 640x480, all in one run so the
+// ratios between them are comparable:
+//   facet_bench_normals --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+// Each iteration is one stage call through StageRunner: depth conversion, normals and the
+// output allocation, as in a graph.
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "convert/points_stage.hpp"
+#include "facet/testing/stage_runner.hpp"
+#include "facet/types/images.hpp"
+#include "normals/cross_stage.hpp"
+#include "normals/pca_stage.hpp"
+#if defined(FACET_HAVE_PCL_NORMALS)
+#include "normals/pcl/integral_stage.hpp"
+#endif
+
+namespace {
+
+const std::filesystem::path kMosd = std::filesystem::path(FACET_SOURCE_DIR) / "data" / "mosd";
+
+// The bundled intrinsics file is flat "key: value" lines; '#' starts a comment.
+facet::CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::map<std::string, double> values;
+  std::string line;
+  while (std::getline(in, line)) {
+    line = line.substr(0, line.find('#'));
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    const auto key_begin = line.find_first_not_of(' ');
+    values[line.substr(key_begin, colon - key_begin)] = std::stod(line.substr(colon + 1));
+  }
+  return {values.at("fx"),
+          values.at("fy"),
+          values.at("cx"),
+          values.at("cy"),
+          static_cast<int>(values.at("width")),
+          static_cast<int>(values.at("height"))};
+}
+
+// learn0: a cluttered table top, 640x480 uint16 mm, with large invalid (cropped) areas.
+facet::DepthImage real_frame() {
+  const auto file = kMosd / "depth" / "learn0.png";
+  facet::DepthImage image;
+  image.depth = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+  if (image.depth.type() != CV_16UC1) throw std::runtime_error("cannot read " + file.string());
+  image.camera = read_intrinsics(kMosd / "intrinsics.yaml");
+  image.frame.stem = "learn0";
+  return image;
+}
+
+template <class StageT>
+void run_stage(benchmark::State& state, const std::map<std::string, facet::ParamValue>& params,
+               const char* output) {
+  const facet::DepthImage frame = real_frame();
+  facet::testing::StageRunner<StageT> runner(params);
+  runner.set_input("depth", facet::Packet::make(frame));
+  for (auto _ : state) {
+    runner.run();
+    benchmark::DoNotOptimize(runner.output_packet(output));
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(frame.depth.total()));
+}
+
+using facet::normals::CrossStage;
+
+void BM_ConvertPoints(benchmark::State& state) {
+  run_stage<facet::convert::PointsStage>(state, {}, "points");
+}
+BENCHMARK(BM_ConvertPoints)->Unit(benchmark::kMicrosecond);
+
+void BM_CrossImageDisparity(benchmark::State& state) {
+  run_stage<CrossStage>(state, {{"space", std::string("image")}}, "normals");
+}
+BENCHMARK(BM_CrossImageDisparity)->Unit(benchmark::kMicrosecond);
+
+void BM_CrossImageMm(benchmark::State& state) {
+  run_stage<CrossStage>(
+      state, {{"space", std::string("image")}, {"image_depth", std::string("mm")}}, "normals");
+}
+BENCHMARK(BM_CrossImageMm)->Unit(benchmark::kMicrosecond);
+
+void BM_CrossMetric(benchmark::State& state) {
+  run_stage<CrossStage>(state, {{"space", std::string("metric")}}, "normals");
+}
+BENCHMARK(BM_CrossMetric)->Unit(benchmark::kMicrosecond);
+
+void BM_CrossImageCentred(benchmark::State& state) {
+  run_stage<CrossStage>(
+      state, {{"space", std::string("image")}, {"triangle", std::string("centred")}}, "normals");
+}
+BENCHMARK(BM_CrossImageCentred)->Unit(benchmark::kMicrosecond);
+
+// The authors' optional smoothing: box average over 3x3, not renormalised.
+void BM_CrossImageSmooth1(benchmark::State& state) {
+  run_stage<CrossStage>(
+      state, {{"space", std::string("image")}, {"smooth_radius", std::int64_t{1}}}, "normals");
+}
+BENCHMARK(BM_CrossImageSmooth1)->Unit(benchmark::kMicrosecond);
+
+void BM_CrossImageSmooth1Renormalized(benchmark::State& state) {
+  run_stage<CrossStage>(
+      state,
+      {{"space", std::string("image")}, {"smooth_radius", std::int64_t{1}}, {"renormalize", true}},
+      "normals");
+}
+BENCHMARK(BM_CrossImageSmooth1Renormalized)->Unit(benchmark::kMicrosecond);
+
+void BM_PcaImage(benchmark::State& state) {
+  run_stage<facet::normals::PcaStage>(
+      state, {{"space", std::string("image")}, {"window", std::int64_t{state.range(0)}}},
+      "normals");
+}
+BENCHMARK(BM_PcaImage)->ArgName("window")->Arg(3)->Arg(5)->Unit(benchmark::kMicrosecond);
+
+void BM_PcaMetric(benchmark::State& state) {
+  run_stage<facet::normals::PcaStage>(
+      state, {{"space", std::string("metric")}, {"window", std::int64_t{state.range(0)}}},
+      "normals");
+}
+BENCHMARK(BM_PcaMetric)->ArgName("window")->Arg(3)->Arg(5)->Unit(benchmark::kMicrosecond);
+
+#if defined(FACET_HAVE_PCL_NORMALS)
+// PCL at its defaults (average_3d_gradient, smoothing size 10), and its covariance method.
+void BM_IntegralPcl(benchmark::State& state) {
+  run_stage<facet::normals::IntegralStage>(state, {}, "normals");
+}
+BENCHMARK(BM_IntegralPcl)->Unit(benchmark::kMicrosecond);
+
+void BM_IntegralPclCovariance(benchmark::State& state) {
+  run_stage<facet::normals::IntegralStage>(state, {{"method", std::string("covariance")}},
+                                           "normals");
+}
+BENCHMARK(BM_IntegralPclCovariance)->Unit(benchmark::kMicrosecond);
+#endif
+
+}  // namespace
+BENCHMARK_MAIN();
