@@ -14,7 +14,7 @@ mode="${1:-run}"
 packages=(
   g++ cmake ninja-build pkg-config ccache
   libboost-dev libboost-filesystem-dev libyaml-cpp-dev libopencv-dev
-  libeigen3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libeigen3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libpcl-dev
 )
 
 install_packages() {
