@@ -1,0 +1,24 @@
+#pragma once
+// grow.surfaces: region growing of the non-edge pixels into surface patches (paper sec. II-A c),
+// assignment of edge pixels to the patches, and which patches touch.
+
+#include <cstdint>
+
+#include "facet/stage.hpp"
+#include "grow/edge_assignment.hpp"
+
+namespace facet::grow {
+
+class GrowSurfaces final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit GrowSurfaces(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  int connectivity_;
+  std::int64_t min_size_px_;
+  AssignmentRule assignment_;
+};
+
+}  // namespace facet::grow
