@@ -1,0 +1,311 @@
+// grow.surfaces: flood fill, minimum size, the gated assignment pass and adjacency, on hand-made
+// inputs, on exact synthetic geometry and against a plain reference on real frames.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <set>
+
+#include "facet/types/images.hpp"
+#include "facet/types/patches.hpp"
+#include "reference_growing.hpp"
+#include "surface_pipeline.hpp"
+#include "surface_test_geometry.hpp"
+#include "synthetic_scene.hpp"
+
+namespace facet::test {
+namespace {
+
+const std::filesystem::path kMosd = std::filesystem::path(FACET_TEST_DATA_DIR) / "mosd";
+
+// A fronto-parallel plane at 1 m, 2 mm between pixels, every pixel surface.
+struct FlatInput {
+  EdgeImage edges;
+  PointImage points;
+};
+
+FlatInput flat_input(int width, int height) {
+  FlatInput input;
+  input.points.points = cv::Mat(height, width, CV_32FC3);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      input.points.points.at<cv::Vec3f>(y, x) =
+          cv::Vec3f(0.002F * static_cast<float>(x), 0.002F * static_cast<float>(y), 1.F);
+    }
+  }
+  input.edges.mask = cv::Mat::zeros(height, width, CV_8UC1);
+  input.edges.score = cv::Mat::ones(height, width, CV_32FC1);
+  return input;
+}
+
+cv::Mat shifted(const cv::Mat& image, int dx, int dy, const cv::Scalar& fill) {
+  cv::Mat out(image.size(), image.type(), fill);
+  const cv::Rect source(std::max(0, -dx), std::max(0, -dy), image.cols - std::abs(dx),
+                        image.rows - std::abs(dy));
+  image(source).copyTo(out(source + cv::Point(dx, dy)));
+  return out;
+}
+
+// The patch label most pixels of `region` carry (0 if none).
+std::int32_t dominant_label(const cv::Mat& labels, const cv::Mat& region, double* share = nullptr) {
+  std::map<std::int32_t, int> votes;
+  int total = 0;
+  for (int y = 0; y < labels.rows; ++y) {
+    for (int x = 0; x < labels.cols; ++x) {
+      if (region.at<unsigned char>(y, x) == 0) continue;
+      ++total;
+      const std::int32_t label = labels.at<std::int32_t>(y, x);
+      if (label != 0) ++votes[label];
+    }
+  }
+  std::int32_t best = 0;
+  int best_votes = 0;
+  for (const auto& [label, count] : votes) {
+    if (count > best_votes) {
+      best = label;
+      best_votes = count;
+    }
+  }
+  if (share != nullptr) *share = total > 0 ? static_cast<double>(best_votes) / total : 0.0;
+  return best;
+}
+
+TEST(GrowSurfaces, AssignmentRespectsTheThreeDimensionalGate) {
+  FlatInput input = flat_input(30, 30);
+  input.edges.mask.colRange(14, 17).setTo(255);          // a 3-pixel edge band splits the plane
+  input.points.points.at<cv::Vec3f>(10, 15)[2] = 1.05F;  // 5 cm behind its neighbours
+  const Overrides params{{"min_size_px", std::int64_t{1}}};
+  const GrowResult result = run_grow(input.edges, input.points, params);
+  ASSERT_EQ(result.patches.count, 2);
+  const cv::Mat& labels = result.patches.labels;
+  EXPECT_EQ(labels.at<std::int32_t>(10, 15), 0) << "a far pixel must not be assigned";
+  EXPECT_EQ(labels.at<std::int32_t>(10, 14), 1);
+  EXPECT_EQ(labels.at<std::int32_t>(10, 16), 2);
+  EXPECT_NE(labels.at<std::int32_t>(11, 15), 0);
+  EXPECT_EQ(cv::countNonZero(labels == 0), 1);
+  EXPECT_DOUBLE_EQ(result.unassigned_ratio, 1.0 / 900.0);
+  ASSERT_EQ(result.adjacency.pairs.size(), 1U);
+  EXPECT_EQ(result.adjacency.pairs[0], std::make_pair(1, 2));
+
+  // A gate wider than the step lets it join.
+  Overrides wide = params;
+  wide["assign_max_distance_m"] = 0.06;
+  EXPECT_NE(run_grow(input.edges, input.points, wide).patches.labels.at<std::int32_t>(10, 15), 0);
+  // And a radius of 0 assigns nothing.
+  Overrides none = params;
+  none["assign_radius_px"] = std::int64_t{0};
+  EXPECT_EQ(cv::countNonZero(run_grow(input.edges, input.points, none).patches.labels == 0), 90);
+}
+
+TEST(GrowSurfaces, AssignmentOnlyReachesRhoPixels) {
+  FlatInput input = flat_input(40, 10);
+  input.edges.mask.colRange(5, 40).setTo(255);
+  const Overrides params{{"min_size_px", std::int64_t{1}}, {"assign_max_distance_m", 1.0}};
+  const GrowResult result = run_grow(input.edges, input.points, params);
+  const cv::Mat& labels = result.patches.labels;
+  EXPECT_EQ(labels.at<std::int32_t>(5, 9), 1);   // 5 columns from the patch
+  EXPECT_EQ(labels.at<std::int32_t>(5, 10), 0);  // 6 columns: out of reach
+}
+
+TEST(GrowSurfaces, ConnectivityDecidesWhetherADiagonalLineSeparates) {
+  FlatInput input = flat_input(20, 20);
+  for (int i = 0; i < 20; ++i)
+    input.edges.mask.at<unsigned char>(i, i) = 255;
+  const Overrides base{{"min_size_px", std::int64_t{1}}, {"assign_radius_px", std::int64_t{0}}};
+  Overrides four = base;
+  four["connectivity"] = std::int64_t{4};
+  const GrowResult split = run_grow(input.edges, input.points, four);
+  EXPECT_EQ(split.patches.count, 2);
+  // Ids in raster order of the first pixel: the upper triangle starts at (row 0, col 1).
+  EXPECT_EQ(split.patches.labels.at<std::int32_t>(0, 19), 1);
+  EXPECT_EQ(split.patches.labels.at<std::int32_t>(19, 0), 2);
+  Overrides eight = base;
+  eight["connectivity"] = std::int64_t{8};
+  EXPECT_EQ(run_grow(input.edges, input.points, eight).patches.count, 1);
+}
+
+TEST(GrowSurfaces, SmallRegionsReturnToThePoolAndJoinTheirNeighbour) {
+  FlatInput input = flat_input(60, 60);
+  cv::rectangle(input.edges.mask, cv::Rect(20, 20, 6, 6), cv::Scalar(255));  // 4x4 inside
+  const GrowResult dropped = run_grow(input.edges, input.points);
+  EXPECT_EQ(dropped.patches.count, 1);
+  EXPECT_EQ(cv::countNonZero(dropped.patches.labels != 1), 0);
+  const GrowResult kept = run_grow(input.edges, input.points, {{"min_size_px", std::int64_t{16}}});
+  EXPECT_EQ(kept.patches.count, 2);
+  EXPECT_EQ(kept.patches.labels.at<std::int32_t>(22, 22), 2);
+}
+
+TEST(GrowSurfaces, BoxFacesBecomeSeparateTouchingPatches) {
+  SceneBuilder builder;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(0.0, 0.0, 1.0);
+  pose.linear() = (Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitY()) *
+                   Eigen::AngleAxisd(-0.5, Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  builder.box(pose, {0.1, 0.1, 0.1});
+  const SceneResult result = run_scene(builder);
+  const cv::Mat& labels = result.grown.patches.labels;
+
+  std::set<std::int32_t> face_patches;
+  int visible_faces = 0;
+  for (int face = 1; face <= 6; ++face) {
+    const cv::Mat pixels = result.scene.face == face;
+    if (cv::countNonZero(pixels) < 2000) continue;
+    ++visible_faces;
+    double share = 0.0;
+    const std::int32_t label = dominant_label(labels, pixels, &share);
+    ASSERT_NE(label, 0) << "face " << face;
+    // The rest: steep-face pixels whose neighbours are farther apart than the 3D gate.
+    EXPECT_GT(share, 0.75) << "face " << face;
+    // The patch holds little of other faces: only crease pixels assigned across the crease.
+    double purity = 0.0;
+    EXPECT_EQ(dominant_label(result.scene.face, labels == label, &purity), face);
+    EXPECT_GT(purity, 0.97);
+    face_patches.insert(label);
+  }
+  ASSERT_EQ(visible_faces, 3);
+  EXPECT_EQ(face_patches.size(), 3U);
+  EXPECT_EQ(result.grown.patches.count, 3);
+  for (const std::int32_t a : face_patches) {
+    for (const std::int32_t b : face_patches) {
+      if (a < b) {
+        EXPECT_TRUE(adjacent(result.grown.adjacency, a, b)) << a << "-" << b;
+      }
+    }
+  }
+}
+
+TEST(GrowSurfaces, CylinderSideStaysOneSmoothPatch) {
+  SceneBuilder builder;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(0.0, 0.0, 1.0);
+  pose.linear() = Eigen::AngleAxisd(CV_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  builder.cylinder(pose, 0.08, 0.15);
+  const SceneResult result = run_scene(builder);
+  const cv::Mat side = result.scene.face == 1;
+  ASSERT_GT(cv::countNonZero(side), 10000);
+  double share = 0.0;
+  const std::int32_t label = dominant_label(result.grown.patches.labels, side, &share);
+  ASSERT_NE(label, 0);
+  EXPECT_GT(share, 0.85);  // the rest: grazing-angle rims near the silhouette
+  EXPECT_EQ(result.grown.patches.count, 1);
+}
+
+TEST(GrowSurfaces, DepthStepSeparatesPatchesAndTheGateKeepsSides) {
+  SceneBuilder builder;
+  builder.plane({0, 0, 1.3}, {0, 0, -1});
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(0.05, 0.0, 1.1);
+  builder.box(pose, {0.1, 0.08, 0.1});
+  const SceneResult result = run_scene(builder);
+  const cv::Mat& labels = result.grown.patches.labels;
+  const std::int32_t wall = dominant_label(labels, result.scene.object == 1);
+  const std::int32_t box = dominant_label(labels, result.scene.object == 2);
+  ASSERT_NE(wall, 0);
+  ASSERT_NE(box, 0);
+  EXPECT_NE(wall, box);
+  // 20 cm apart in depth: the assignment never crosses the step.
+  EXPECT_EQ(cv::countNonZero((labels == box) & (result.scene.object == 1)), 0);
+  EXPECT_EQ(cv::countNonZero((labels == wall) & (result.scene.object == 2)), 0);
+  EXPECT_TRUE(adjacent(result.grown.adjacency, wall, box));
+}
+
+TEST(GrowSurfaces, InvalidPixelsStayUnassignedAndNothingBecomesNaN) {
+  SceneBuilder builder;
+  builder.plane({0, 0, 1.0}, Eigen::Vector3d(0.2, -0.3, -1.0));
+  RenderedScene scene = builder.render();
+  scene.depth_m(cv::Rect(200, 150, 80, 60)).setTo(0.F);  // a hole
+  for (int i = 0; i < 50; ++i)
+    scene.depth_m.at<float>(50 + 7 * i % 380, 30 + 11 * i) = 0.F;
+  const PointImage points = points_from_depth(scene.depth_m, scene.camera);
+  const NormalImage normals = cross_normals(points);
+  for (const bool avg : {false, true}) {
+    const EdgeImage edges = avg ? run_edges<edges::AvgNormalEdges>(normals) : run_edges(normals);
+    EXPECT_TRUE(cv::checkRange(edges.score, true, nullptr, 0.0, 1.0 + 1e-6));
+    EXPECT_EQ(cv::countNonZero(edges.mask(cv::Rect(200, 150, 80, 60)) == 0), 0);
+    const GrowResult grown = run_grow(edges, points);
+    EXPECT_EQ(grown.patches.count, 1);
+    EXPECT_EQ(cv::countNonZero((grown.patches.labels != 0) & (scene.depth_m == 0.F)), 0);
+    EXPECT_GE(grown.unassigned_ratio, 0.0);
+    EXPECT_LT(grown.unassigned_ratio, 0.05);
+  }
+}
+
+TEST(GrowSurfaces, ShiftingTheSceneShiftsTheResultAndNothingElse) {
+  SceneBuilder builder;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(0.0, 0.0, 1.2);
+  pose.linear() =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 1, 0.3).normalized()).toRotationMatrix();
+  builder.box(pose, {0.12, 0.08, 0.1});
+  const SceneResult original = run_scene(builder);
+  const int dx = 9;
+  const int dy = -6;
+  const cv::Scalar nan_fill = cv::Scalar::all(kNaN);
+  NormalImage normals;
+  normals.normals = shifted(original.normals.normals, dx, dy, nan_fill);
+  PointImage points;
+  points.points = shifted(original.points.points, dx, dy, nan_fill);
+  const EdgeImage edges = run_edges(normals);
+  const GrowResult grown = run_grow(edges, points);
+
+  EXPECT_EQ(cv::norm(edges.score, shifted(original.edges.score, dx, dy, 0), cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::countNonZero(edges.mask != shifted(original.edges.mask, dx, dy, 255)), 0);
+  EXPECT_EQ(grown.patches.count, original.grown.patches.count);
+  EXPECT_EQ(
+      cv::countNonZero(grown.patches.labels != shifted(original.grown.patches.labels, dx, dy, 0)),
+      0);
+  EXPECT_EQ(grown.adjacency.pairs, original.grown.adjacency.pairs);
+  EXPECT_EQ(grown.adjacency.contact_px, original.grown.adjacency.contact_px);
+  EXPECT_GE(original.grown.patches.count, 2);
+}
+
+TEST(GrowSurfaces, AgreesWithThePlainReferenceOnRealFrames) {
+  struct Case {
+    const char* stem;
+    int connectivity;
+    int radius_px;
+    double gate_m;
+  };
+  for (const Case& c :
+       {Case{"learn0", 4, 5, 0.01}, Case{"learn18", 8, 5, 0.015}, Case{"learn20", 4, 3, 0.01}}) {
+    const RealFrame frame = load_mosd_frame(kMosd, c.stem);
+    const EdgeImage edges = run_edges(frame.normals, {{"threshold", 0.89}});
+    const GrowResult grown = run_grow(edges, frame.points,
+                                      {{"connectivity", std::int64_t{c.connectivity}},
+                                       {"assign_radius_px", std::int64_t{c.radius_px}},
+                                       {"assign_max_distance_m", c.gate_m}});
+    const ReferenceGrowth reference =
+        reference_grow(edges.mask, frame.points.points, c.connectivity, 100, c.radius_px, c.gate_m);
+    ASSERT_EQ(grown.patches.count, reference.count) << c.stem;
+    EXPECT_GT(grown.patches.count, 5) << c.stem;
+    EXPECT_EQ(cv::countNonZero(grown.patches.labels != reference.labels), 0) << c.stem;
+    ASSERT_EQ(grown.adjacency.pairs.size(), reference.contacts.size()) << c.stem;
+    std::size_t i = 0;
+    for (const auto& [pair, contacts] : reference.contacts) {
+      EXPECT_EQ(grown.adjacency.pairs[i], pair);
+      EXPECT_EQ(grown.adjacency.contact_px[i], contacts);
+      ++i;
+    }
+    EXPECT_EQ(grown.adjacency.count, grown.patches.count);
+  }
+}
+
+TEST(GrowSurfaces, SpecDocumentsEveryPortAndParameter) {
+  const StageSpec spec = grow::GrowSurfaces::spec();
+  for (const auto& port : spec.inputs())
+    EXPECT_FALSE(port.doc.empty()) << port.name;
+  for (const auto& port : spec.outputs())
+    EXPECT_FALSE(port.doc.empty()) << port.name;
+  for (const auto& param : spec.params()) {
+    EXPECT_FALSE(param.doc.empty()) << param.name;
+    EXPECT_FALSE(param.options.origin.empty()) << param.name;
+  }
+}
+
+}  // namespace
+}  // namespace facet::test
