@@ -1,0 +1,76 @@
+// Benchmarks of the surface-patch stages on a real frame, one thread:
+//   facet_bench_surfaces --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+// Input: mOSD learn0 (640x480, Kinect-type), metric cross-product normals (r = 2) computed by
+// the test helper, so the benchmark does not depend on the normals plugin.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+#include "edges/edges_avg.hpp"
+#include "edges/edges_max.hpp"
+#include "facet/testing/stage_runner.hpp"
+#include "facet/types/images.hpp"
+#include "grow/grow_surfaces.hpp"
+#include "surface_test_geometry.hpp"
+
+namespace {
+
+const std::filesystem::path kMosd = std::filesystem::path(FACET_SOURCE_DIR) / "data" / "mosd";
+
+const facet::test::RealFrame& frame() {
+  static const facet::test::RealFrame loaded = facet::test::load_mosd_frame(kMosd, "learn0");
+  return loaded;
+}
+
+template <class EdgeStage>
+void BM_Edges(benchmark::State& state) {
+  facet::testing::StageRunner<EdgeStage> runner({{"pixels", std::int64_t{state.range(0)}}});
+  runner.set_input("normals", facet::Packet::make(frame().normals));
+  for (auto _ : state) {
+    runner.run();
+    benchmark::DoNotOptimize(runner.output_packet("edges").address());
+  }
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(frame().normals.normals.total()));
+}
+BENCHMARK(BM_Edges<facet::edges::MaxNormalEdges>)
+    ->Name("edges.max")
+    ->ArgName("pixels")
+    ->Arg(3)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Edges<facet::edges::AvgNormalEdges>)
+    ->Name("edges.avg")
+    ->ArgName("pixels")
+    ->Arg(3)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
+
+// grow.surfaces on the edges of edges.max (pixels 3, threshold 0.89: the metric-normal value
+// the prototype measured; at 0.85 learn0 has fewer, larger patches).
+void BM_GrowSurfaces(benchmark::State& state) {
+  facet::testing::StageRunner<facet::edges::MaxNormalEdges> edges({{"threshold", 0.89}});
+  edges.set_input("normals", facet::Packet::make(frame().normals));
+  edges.run();
+  facet::testing::StageRunner<facet::grow::GrowSurfaces> grow(
+      {{"connectivity", std::int64_t{state.range(0)}}});
+  grow.set_input("edges", edges.output_packet("edges"));
+  grow.set_input("points", facet::Packet::make(frame().points));
+  for (auto _ : state) {
+    grow.run();
+    benchmark::DoNotOptimize(grow.output_packet("patches").address());
+  }
+  grow.run();
+  for (const auto& metric : grow.metrics())
+    state.counters[metric.name] = metric.value;
+}
+BENCHMARK(BM_GrowSurfaces)
+    ->Name("grow.surfaces")
+    ->ArgName("connectivity")
+    ->Arg(4)
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
