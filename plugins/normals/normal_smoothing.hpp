@@ -23,10 +23,17 @@ class NormalSmoother {
   void apply(const cv::Mat& normals, cv::Mat& smoothed);
 
  private:
+  static void window_sum(const float* __restrict padded, int width, int r, float* __restrict out);
+  void finish_row(const float* __restrict centre, int width, float* __restrict out) const;
+
   int radius_px_;
   bool renormalize_;
+  // The normals split into planes x, y, z (0 where invalid) and valid (1 or 0).
+  std::vector<float> planes_;
   // Column sums over the window's rows, structure of arrays: x, y, z and the valid count.
   std::vector<float> sum_x_, sum_y_, sum_z_, count_;
+  // Their sums over the window's columns.
+  std::vector<float> win_x_, win_y_, win_z_, win_count_;
 };
 
 }  // namespace facet::normals

@@ -34,7 +34,11 @@ class PcaNormals {
   // n, x, y, z, xx, xy, xz, yy, yz, zz
   static constexpr int kMoments = 10;
   PcaOptions options_;
-  std::array<std::vector<double>, kMoments> column_sums_;
+  void add_row_moments(const float* z, const float* col_factor, double row_factor, bool scale_by_z,
+                       int width);
+
+  std::array<std::vector<double>, kMoments> column_sums_;  // over the window's rows
+  std::array<std::vector<double>, kMoments> window_sums_;  // over the whole window
 };
 
 }  // namespace facet::normals
