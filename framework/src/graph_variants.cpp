@@ -43,13 +43,21 @@ void check_extends_cycles(const RawGraph& graph, const RawVariant& variant,
 }
 
 void apply_replace(RawNode& node, const RawReplace& replace, const std::string& variant) {
+  bool stage_changed = false;
   if (replace.stage) {
+    stage_changed = !node.stage || node.stage->text != replace.stage->text;
     // Remember the stage written in the file, even when several variants replace it in turn.
     if (node.replaced_stage.empty() && node.stage) node.replaced_stage = node.stage->text;
     node.replaced_by_variant = variant;
     node.stage = replace.stage;
   }
-  if (replace.params) node.params = *replace.params;
+  // The old parameters belong to the old stage: a new stage starts from its own defaults unless
+  // the variant gives parameters.
+  if (replace.params) {
+    node.params = *replace.params;
+  } else if (stage_changed) {
+    node.params.clear();
+  }
   if (replace.inputs) {
     node.inputs = *replace.inputs;
     node.inputs_where = replace.inputs_where;

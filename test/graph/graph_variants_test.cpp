@@ -16,6 +16,7 @@ variants:
   big: {set: {median.size: 5}}
   pca: {replace: {normals: {stage: normals.pca, params: {window: 7}}}}
   raw: {replace: {normals: {in: {depth: source.depth}}}}
+  bare: {replace: {normals: {stage: normals.pca}}}
   both: {extends: [big, pca], set: {median.size: 7, normals.window: 9}}
   bigger: {extends: big, set: {median.size: 9}}
 )";
@@ -30,7 +31,7 @@ TEST(GraphVariants, NoVariantLeavesTheGraphAsWritten) {
   Diagnostics diagnostics;
   const GraphSpec graph = load_variant("", diagnostics);
   ASSERT_FALSE(diagnostics.has_errors()) << diagnostics.str();
-  EXPECT_EQ(graph.variants, (std::vector<std::string>{"big", "pca", "raw", "both", "bigger"}));
+  EXPECT_EQ(graph.variants, (std::vector<std::string>{"big", "pca", "raw", "bare", "both", "bigger"}));
   EXPECT_EQ(find_param(*graph.find_node("median"), "size")->text, "3");
   EXPECT_EQ(graph.find_node("normals")->stage, "normals.cross");
 }
@@ -57,6 +58,15 @@ TEST(GraphVariants, ReplaceSwapsStageAndParamsButKeepsInputs) {
   EXPECT_EQ(find_param(normals, "window")->text, "7");
   ASSERT_EQ(normals.inputs.size(), 1u);
   EXPECT_EQ(normals.inputs[0].from_node, "median");
+}
+
+TEST(GraphVariants, ReplacingTheStageWithoutParamsStartsFromItsDefaults) {
+  Diagnostics diagnostics;
+  const GraphSpec graph = load_variant("bare", diagnostics);
+  ASSERT_FALSE(diagnostics.has_errors()) << diagnostics.str();
+  const NodeSpec& normals = *graph.find_node("normals");
+  EXPECT_EQ(normals.stage, "normals.pca");
+  EXPECT_TRUE(normals.params.empty());  // radius belonged to normals.cross
 }
 
 TEST(GraphVariants, ReplaceCanRewireInputsOnly) {
@@ -94,7 +104,7 @@ TEST(GraphVariants, UnknownVariantSuggestsAndListsTheVariants) {
   load_variant("bgi", diagnostics);
   EXPECT_EQ(diagnostics.str(),
             "<command line>: error: --variant bgi: unknown variant 'bgi'; did you mean 'big'?\n"
-            "g.yaml: note: the graph defines: big, pca, raw, both, bigger\n");
+            "g.yaml: note: the graph defines: big, pca, raw, bare, both, bigger\n");
 }
 
 TEST(GraphVariants, UnknownVariantInAGraphWithoutVariants) {
