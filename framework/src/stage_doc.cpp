@@ -45,6 +45,24 @@ std::string indented(const std::string& text, const std::string& indent) {
   return out;
 }
 
+// Text for a Markdown table cell: one line, with the column separator escaped.
+std::string table_cell(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+// The summary line as a paragraph of its own, then the details.
+std::string markdown_doc(const std::string& doc) {
+  const auto newline = doc.find('\n');
+  if (newline == std::string::npos) return doc;
+  return doc.substr(0, newline) + "\n\n" + doc.substr(newline + 1);
+}
+
 }  // namespace
 
 std::string describe_param(const ParamSpec& param) {
@@ -86,17 +104,18 @@ void write_stage_text(std::ostream& out, const StageEntry& entry) {
 
 void write_stage_markdown(std::ostream& out, const StageEntry& entry) {
   const StageSpec& spec = entry.spec;
-  out << "### `" << spec.name() << "`\n\n" << spec.doc() << "\n\n";
+  out << "### `" << spec.name() << "`\n\n" << markdown_doc(spec.doc()) << "\n\n";
   out << "Plugin `" << entry.plugin->name << "`, concurrency `" << to_string(spec.concurrency())
       << "`.\n\n";
   if (!spec.inputs().empty() || !spec.outputs().empty()) {
     out << "| port | direction | type | doc |\n|---|---|---|---|\n";
     for (const auto& port : spec.inputs()) {
       out << "| `" << port.name << "` | in" << (port.required ? "" : " (optional)") << " | `"
-          << port.type_key << "` | " << port.doc << " |\n";
+          << port.type_key << "` | " << table_cell(port.doc) << " |\n";
     }
     for (const auto& port : spec.outputs()) {
-      out << "| `" << port.name << "` | out | `" << port.type_key << "` | " << port.doc << " |\n";
+      out << "| `" << port.name << "` | out | `" << port.type_key << "` | "
+          << table_cell(port.doc) << " |\n";
     }
     out << "\n";
   }
@@ -104,13 +123,11 @@ void write_stage_markdown(std::ostream& out, const StageEntry& entry) {
     out << "| parameter | type | default | range | unit | doc | default from |\n";
     out << "|---|---|---|---|---|---|---|\n";
     for (const auto& param : spec.params()) {
-      std::string doc = param.doc;
-      std::replace(doc.begin(), doc.end(), '\n', ' ');
       out << "| `" << param.name << "` | " << to_string(param.type) << " | "
           << (param.options.required ? std::string("required")
                                    : fmt::format("`{}`", format_param_value(param.default_value)))
-          << " | " << range_text(param) << " | " << param.options.unit << " | " << doc << " | "
-          << param.options.origin << " |\n";
+          << " | " << range_text(param) << " | " << param.options.unit << " | "
+          << table_cell(param.doc) << " | " << table_cell(param.options.origin) << " |\n";
     }
     out << "\n";
   }

@@ -86,3 +86,22 @@ TEST(Cli, DotPrintsNodesAndTypedEdges) {
 
 }  // namespace
 }  // namespace facet::test
+
+namespace facet::test {
+namespace {
+
+// docs/stage-reference.md is generated from the stages' declarations; a stage whose contract
+// changed without the page being regenerated fails here.
+TEST(Cli, StageReferenceIsCurrent) {
+  const auto generated = run_cli("inspect --all --markdown", "env -u FACET_PLUGIN_PATH");
+  ASSERT_EQ(generated.exit_code, 0) << generated.out;
+  const std::string page = read_file(source_dir() / "docs/stage-reference.md");
+  const std::string marker = "<!-- generated below: do not edit by hand -->\n\n";
+  const auto at = page.find(marker);
+  ASSERT_NE(at, std::string::npos) << "docs/stage-reference.md lost its marker line";
+  EXPECT_TRUE(page.substr(at + marker.size()) == generated.out)
+      << "docs/stage-reference.md is stale: run scripts/update_stage_reference.sh";
+}
+
+}  // namespace
+}  // namespace facet::test
