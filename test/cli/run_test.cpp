@@ -104,3 +104,47 @@ TEST(Run, MissingPluginIsAPluginFailure) {
 
 }  // namespace
 }  // namespace facet::test
+
+namespace facet::test {
+namespace {
+
+TEST(Run, FacesGraphWritesPatchesAndEdgesPerFrame) {
+  TempDir out("facet-run-faces");
+  const auto result = run_cli("run " + shell_quote((source_dir() / "graphs/faces.yaml").string()) +
+                              " -q --param output=" + shell_quote(out.path().string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const auto inputs = count_pngs(source_dir() / "data/mosd/depth");
+  ASSERT_EQ(count_pngs(out.path() / "patches"), inputs);
+  ASSERT_EQ(count_pngs(out.path() / "edges"), inputs);
+  for (const auto& entry : std::filesystem::directory_iterator(out.path() / "patches")) {
+    const cv::Mat patches = cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(patches.type(), CV_16UC1) << entry.path();
+    double lo = 0, hi = 0;
+    cv::minMaxLoc(patches, &lo, &hi);
+    // A table and a few box faces: more than a handful of patches, far fewer than noise would give.
+    EXPECT_GE(hi, 3.0) << entry.path();
+    EXPECT_LE(hi, 200.0) << entry.path();
+    const cv::Mat edges =
+        cv::imread((out.path() / "edges" / entry.path().filename()).string(), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(edges.type(), CV_8UC1);
+    // A binary mask: only 0 and 255.
+    EXPECT_EQ(cv::countNonZero(edges == 0) + cv::countNonZero(edges == 255), edges.rows * edges.cols);
+  }
+}
+
+TEST(Run, EveryVariantOfTheAbGraphsIsValid) {
+  for (const auto& [graph, variants] :
+       std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"ab_normals", {"cross_r1", "cross_r2", "pca3", "pca5", "integral"}},
+           {"ab_edges", {"max1", "max3", "avg1", "avg3"}}}) {
+    for (const auto& variant : variants) {
+      const auto result = run_cli("validate " +
+                                  shell_quote((source_dir() / "graphs" / (graph + ".yaml")).string()) +
+                                  " --variant " + variant);
+      EXPECT_EQ(result.exit_code, 0) << graph << " " << variant << "\n" << result.out;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace facet::test
