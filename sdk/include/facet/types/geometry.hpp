@@ -1,0 +1,74 @@
+#pragma once
+// Geometric results of the object stages: support planes and per-object shape models, in metres in
+// the camera frame (x right, y down, z along the optical axis).
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "facet/packet.hpp"
+#include "facet/types/frame.hpp"
+
+namespace facet {
+
+// A plane n·x + d = 0 with unit normal n pointing towards the camera (n·x < 0 for points in front).
+struct Plane {
+  std::int32_t id = 0;  // 1..N, the id its pixels carry in the plane label image
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  double offset_m = 0.0;  // d
+  std::int64_t inliers = 0;
+  double rms_m = 0.0;       // root-mean-square point-to-plane distance of the inliers
+  bool horizontal = false;  // normal within the stage's angle of world up (a table, a floor)
+
+  double signed_distance_m(const Eigen::Vector3d& point_m) const {
+    return normal.dot(point_m) + offset_m;
+  }
+};
+
+struct SupportPlanes : FrameHeader {
+  std::vector<Plane> planes;
+  Eigen::Vector3d up = -Eigen::Vector3d::UnitY();  // world up in the camera frame, unit length
+};
+
+// An oriented box: pose maps box coordinates to the camera frame; the box spans ±half_extents_m.
+struct OrientedBox {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();
+};
+
+// Inside-outside function F(x) = ((|x|/a1)^(2/e2) + (|y|/a2)^(2/e2))^(e2/e1) + (|z|/a3)^(2/e1) in
+// the superquadric's own frame; F = 1 on the surface.
+struct Superquadric {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d size_m = Eigen::Vector3d::Zero();  // a1, a2, a3 (half sizes)
+  double epsilon1 = 1.0;  // shape along z: 0.1 square .. 1 round .. 2 pinched
+  double epsilon2 = 1.0;  // shape in the xy plane
+  double residual = 0.0;  // RMS of the fit's residual over the points used
+  bool valid = false;
+};
+
+enum class GraspPrototype { none, power, precision, pincer };
+
+struct ObjectModel {
+  std::int32_t id = 0;  // the id its pixels carry in the object label image
+  std::int64_t pixel_count = 0;
+  Eigen::Vector3d centroid_m = Eigen::Vector3d::Zero();
+  Eigen::AlignedBox3d bounds_m;  // axis-aligned, camera frame
+  OrientedBox box;               // oriented, from PCA of the points
+  std::int32_t support_plane = 0;  // Plane::id it stands on, 0 = none
+  Superquadric superquadric;
+  GraspPrototype grasp = GraspPrototype::none;
+};
+
+struct ObjectList : FrameHeader {
+  std::vector<ObjectModel> objects;
+};
+
+std::string_view to_string(GraspPrototype grasp) noexcept;
+
+}  // namespace facet
+
+FACET_TYPE_KEY(facet::SupportPlanes, "facet.SupportPlanes/1");
+FACET_TYPE_KEY(facet::ObjectList, "facet.ObjectList/1");
