@@ -1,0 +1,96 @@
+#include "blobs/euclidean_regions.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace facet::blobs {
+namespace {
+
+// Union-find over pixel indices whose root is the smallest index of its set, i.e. the region's
+// first pixel in raster order: ids in raster order need no sorting.
+class PixelSets {
+ public:
+  explicit PixelSets(std::size_t count) : parent_(count) {}
+  void make(std::size_t i) { parent_[i] = static_cast<std::int32_t>(i); }
+  std::size_t find(std::size_t i) {
+    while (static_cast<std::size_t>(parent_[i]) != i) {
+      parent_[i] = parent_[parent_[i]];  // path halving
+      i = static_cast<std::size_t>(parent_[i]);
+    }
+    return i;
+  }
+  void join(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a < b) {
+      parent_[b] = static_cast<std::int32_t>(a);
+    } else if (b < a) {
+      parent_[a] = static_cast<std::int32_t>(b);
+    }
+  }
+
+ private:
+  std::vector<std::int32_t> parent_;
+};
+
+bool close(const float* a, const float* b, float max_squared_m2) {
+  const float dx = a[0] - b[0];
+  const float dy = a[1] - b[1];
+  const float dz = a[2] - b[2];
+  return dx * dx + dy * dy + dz * dz < max_squared_m2;
+}
+
+}  // namespace
+
+EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
+                                        float max_distance_m, std::int64_t min_size_px) {
+  const int rows = mask.rows;
+  const int cols = mask.cols;
+  const std::size_t total = mask.total();
+  const float max_squared = max_distance_m * max_distance_m;
+  const auto* point = xyz.ptr<float>();
+  PixelSets sets(total);
+
+  // Raster scan: each pixel is linked to its already visited 8-neighbours (W, NW, N, NE).
+  for (int row = 0; row < rows; ++row) {
+    const unsigned char* in = mask.ptr<unsigned char>(row);
+    const unsigned char* above = row > 0 ? mask.ptr<unsigned char>(row - 1) : nullptr;
+    for (int col = 0; col < cols; ++col) {
+      if (in[col] == 0) continue;
+      const std::size_t i = static_cast<std::size_t>(row) * cols + col;
+      sets.make(i);
+      const float* p = point + 3 * i;
+      if (col > 0 && in[col - 1] != 0 && close(p, p - 3, max_squared)) sets.join(i, i - 1);
+      if (above == nullptr) continue;
+      const std::size_t up = i - static_cast<std::size_t>(cols);
+      for (int dc = -1; dc <= 1; ++dc) {
+        const int c = col + dc;
+        if (c < 0 || c >= cols || above[c] == 0) continue;
+        const std::size_t j = up + static_cast<std::size_t>(c - col);
+        if (close(p, point + 3 * j, max_squared)) sets.join(i, j);
+      }
+    }
+  }
+
+  // Sizes per root, then ids for the roots of large enough sets in raster order.
+  EuclideanRegions out;
+  out.labels = cv::Mat::zeros(rows, cols, CV_32SC1);
+  auto* label = out.labels.ptr<std::int32_t>();
+  const auto* in = mask.ptr<unsigned char>();
+  std::vector<std::int32_t> size_px(total, 0);
+  for (std::size_t i = 0; i < total; ++i) {
+    if (in[i] != 0) ++size_px[sets.find(i)];
+  }
+  std::vector<std::int32_t>& id_of_root = size_px;  // reused: a root's size becomes its id
+  for (std::size_t i = 0; i < total; ++i) {
+    if (in[i] == 0) continue;
+    const std::size_t root = sets.find(i);
+    if (root == i) {
+      id_of_root[i] = size_px[i] >= min_size_px ? ++out.count : 0;
+    }
+    label[i] = id_of_root[root];
+  }
+  return out;
+}
+
+}  // namespace facet::blobs

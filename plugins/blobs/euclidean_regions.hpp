@@ -1,0 +1,20 @@
+#pragma once
+// Euclidean region growing on the image grid (paper sec. II-B e): 8-connected single linkage,
+// two neighbouring pixels join when their 3D points are closer than a distance.
+
+#include <cstdint>
+#include <opencv2/core/mat.hpp>
+
+namespace facet::blobs {
+
+struct EuclideanRegions {
+  cv::Mat labels;  // CV_32SC1, 1..count in raster order of each region's first pixel; 0 = none
+  std::int32_t count = 0;
+};
+
+// mask: CV_8UC1, non-zero = pixel takes part (it must have a finite point). xyz: CV_32FC3,
+// continuous, same size. Regions under min_size_px are left at 0.
+EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
+                                        float max_distance_m, std::int64_t min_size_px);
+
+}  // namespace facet::blobs

@@ -1,0 +1,25 @@
+#pragma once
+// grow.blobs: object candidates as Euclidean blobs of the points left after the support planes
+// (paper sec. II-B e).
+
+#include <cstdint>
+
+#include "facet/stage.hpp"
+
+namespace facet::blobs {
+
+class GrowBlobs final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit GrowBlobs(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  float max_distance_m_;
+  std::int64_t min_size_px_;
+  bool require_front_;
+  double max_behind_fraction_;
+  float behind_margin_m_;
+};
+
+}  // namespace facet::blobs

@@ -1,0 +1,33 @@
+#pragma once
+// planes.support: support and background planes (table, floor, walls) found from large surface
+// patches (paper sec. II-B d), and the patches left over for objects.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+
+#include "facet/stage.hpp"
+#include "planes/plane_fit.hpp"
+#include "planes/support_rule.hpp"
+
+namespace facet::planes {
+
+class SupportPlaneStage final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit SupportPlaneStage(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  PlaneFitRule fit_rule_;
+  SupportRule support_rule_;
+  std::int64_t candidate_min_px_;
+  int max_candidates_;
+  double horizontal_max_deg_;
+  double up_prior_max_deg_;
+  std::optional<Eigen::Vector3f> up_;  // nothing = auto
+  std::int64_t min_segment_px_;
+  std::uint32_t seed_;
+};
+
+}  // namespace facet::planes
