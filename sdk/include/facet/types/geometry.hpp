@@ -36,6 +36,7 @@ struct SupportPlanes : FrameHeader {
 struct OrientedBox {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();
+  double residual_m = 0.0;  // RMS distance of the points it was fitted to from its surface
 };
 
 // Inside-outside function F(x) = ((|x|/a1)^(2/e2) + (|y|/a2)^(2/e2))^(e2/e1) + (|z|/a3)^(2/e1) in

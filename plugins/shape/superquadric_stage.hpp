@@ -1,0 +1,28 @@
+#pragma once
+// shape.superquadric: per object, a superquadric fitted to its visible points by
+// Levenberg–Marquardt over size, shape and pose (paper sec. III-E), with the unseen back side
+// closed by the support plane when one is known.
+
+#include <cstdint>
+
+#include "facet/stage.hpp"
+#include "shape/grasp_rule.hpp"
+#include "shape/superquadric_fit.hpp"
+
+namespace facet::shape {
+
+class SuperquadricStage final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit SuperquadricStage(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  double support_tolerance_m_;
+  double support_max_gap_m_;
+  bool extend_without_plane_;
+  SuperquadricFitOptions fit_options_;
+  GraspRule grasp_rule_;
+};
+
+}  // namespace facet::shape
