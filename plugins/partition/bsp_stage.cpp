@@ -1,0 +1,106 @@
+#include "partition/bsp_stage.hpp"
+
+#include <utility>
+
+#include "facet/types/images.hpp"
+#include "facet/types/patches.hpp"
+#include "partition/object_labels.hpp"
+
+namespace facet::partition {
+
+StageSpec PartitionBsp::spec() {
+  return StageSpec(
+             "partition.bsp",
+             "Binary space partitioning of blobs into objects by the planes of their faces.\n"
+             "Per blob: faces are its patches with at least min_face_px points, each with a "
+             "least-squares plane. A blob whose face points are fewer than min_face_px or than "
+             "min_face_ratio times its other points stays one object. Otherwise faces are tried "
+             "largest first: points further than tolerance_m behind / in front of the plane "
+             "form the two sides; with at least min_split_px on each side the part is split, "
+             "and the points on the plane join the side whose bounding box within 2 x "
+             "tolerance_m of the plane is closest (L1 over both corners) to that of the "
+             "on-plane points (eq. 5). The plane's side continues with its next face, the other "
+             "side is partitioned in turn. With keep_patches a patch is never cut: it goes whole "
+             "to the side holding most of its points. Blob pixels without a point take the "
+             "object of the nearest pixel of their blob. Object ids follow the raster order of "
+             "each object's first pixel.")
+      .input<LabelImage>("blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background.")
+      .input<LabelImage>("patches", "Surface patch ids, CV_32SC1; 0 = in no patch.")
+      .optional_input<PatchAdjacency>(
+          "adjacency",
+          "Not used; accepted so that partition.bsp and partition.convex are "
+          "interchangeable in a graph.")
+      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
+      .output<LabelImage>("objects", "Object ids 1..count, CV_32SC1; 0 = background.")
+      .param("tolerance_m", 0.012, "delta: points closer than this to a face's plane are on it.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "paper (delta = 12 mm)"})
+      .param("min_split_px", 80,
+             "N_split: a split needs this many points on each side (tolerates outliers of the "
+             "plane fit). A pixel count: it scales with the image area.",
+             {.unit = "px",
+              .min = 1.0,
+              .max = 1.0e7,
+              .origin = "paper: 20 at 320x240, x4 for 640x480"})
+      .param("min_face_px", 120,
+             "N_f: least points of a patch to serve as a face, and least face points of a blob "
+             "to be partitioned at all. A pixel count: it scales with the image area.",
+             {.unit = "px",
+              .min = 3.0,
+              .max = 1.0e7,
+              .origin = "paper: 30 at 320x240, x4 for 640x480"})
+      .param("min_face_ratio", 0.1,
+             "k_fe: a blob whose face points are fewer than this times its other points is one "
+             "object (mostly edges: the faces say little about it).",
+             {.min = 0.0, .max = 100.0, .origin = "paper (k_fe = 0.1)"})
+      .param("keep_patches", true,
+             "Never cut a surface patch; it goes whole to the side holding most of its points. "
+             "Fixes the split-order weakness (paper Fig. 9 right).",
+             {.origin = "paper: announced fix"})
+      .param("plane_owner", "boxes",
+             "Which side the on-plane points join: 'boxes' = the paper's bounding-box rule "
+             "(eq. 5); 'behind' = the side behind the face, where the body of a visible face "
+             "lies (plane normals point towards the camera).",
+             {.choices = {std::string("boxes"), std::string("behind")}, .origin = "paper (eq. 5)"})
+      .param("max_splits", 64, "Most splits per blob; a guard against pathological input.",
+             {.min = 0.0, .max = 1.0e6})
+      .concurrency(Concurrency::clonable);
+}
+
+PartitionBsp::PartitionBsp(const Params& params)
+    : partitioner_(BspRule{
+          params.get_double("tolerance_m"),
+          static_cast<std::int32_t>(params.get_int("min_split_px")),
+          static_cast<std::int32_t>(params.get_int("min_face_px")),
+          params.get_double("min_face_ratio"), params.get_bool("keep_patches"),
+          static_cast<std::int32_t>(params.get_int("max_splits")),
+          params.get_string("plane_owner") == "behind" ? PlaneOwner::behind : PlaneOwner::boxes}) {}
+
+void PartitionBsp::process(ProcessContext& ctx) {
+  const auto& blobs = ctx.input<LabelImage>("blobs");
+  const auto& patches = ctx.input<LabelImage>("patches");
+  const auto& points = ctx.input<PointImage>("points");
+  LabelImage objects;
+  static_cast<FrameHeader&>(objects) = blobs;
+  if (blobs.labels.empty()) {
+    ctx.metric("objects", 0);
+    ctx.metric("splits", 0);
+    ctx.output("objects", std::move(objects));
+    return;
+  }
+  check_partition_inputs(blobs.labels, patches.labels, points.points);
+  segments_.build(blobs.labels, patches.labels, points.points);
+  objects.labels = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
+  auto* labels = objects.labels.ptr<std::int32_t>();
+  partitioner_.reset_counters();
+  std::int32_t next_id = 1;
+  for (const BlobRange& blob : segments_.blobs) {
+    next_id += partitioner_.partition(segments_, blob, labels, next_id);
+  }
+  fill_blob_gaps(objects.labels, blobs.labels, next_id);
+  objects.count = relabel_in_raster_order(objects.labels);
+  ctx.metric("objects", objects.count);
+  ctx.metric("splits", static_cast<double>(partitioner_.splits()));
+  ctx.output("objects", std::move(objects));
+}
+
+}  // namespace facet::partition

@@ -1,0 +1,21 @@
+#pragma once
+// partition.bsp: blobs split into objects by the planes of their faces (paper sec. II-B f).
+
+#include "facet/stage.hpp"
+#include "partition/blob_segments.hpp"
+#include "partition/bsp_partition.hpp"
+
+namespace facet::partition {
+
+class PartitionBsp final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit PartitionBsp(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  BspPartitioner partitioner_;
+  BlobSegments segments_;  // keeps its buffers from frame to frame
+};
+
+}  // namespace facet::partition

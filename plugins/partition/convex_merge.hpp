@@ -1,0 +1,64 @@
+#pragma once
+// Merging of adjacent surface patches whose junction is convex (the authors' later "cutfree"
+// test): the surfaces of one object meet at outward edges, the surfaces of two touching objects
+// at inward ones.
+
+#include <cstdint>
+#include <vector>
+
+#include "facet/types/patches.hpp"
+#include "partition/blob_segments.hpp"
+#include "partition/segment_plane.hpp"
+
+namespace facet::partition {
+
+struct ConvexRule {
+  double tolerance_m = 0.01;        // points closer than this to a plane are on it
+  double min_behind_share = 0.9;    // share of a patch's points not in front of the other's plane
+  double min_angle_deg = 30.0;      // mean normals closer than this: a step, not a convex edge
+  std::int32_t min_patch_px = 100;  // smaller patches take part only as leftover pixels
+};
+
+// Which patches touch, as per-patch neighbour lists (CSR), built once per frame.
+class PatchNeighbours {
+ public:
+  void build(const PatchAdjacency& adjacency, std::int32_t max_patch);
+  // Neighbours of `patch` with a larger id.
+  const std::int32_t* begin(std::int32_t patch) const;
+  const std::int32_t* end(std::int32_t patch) const;
+
+ private:
+  std::vector<std::int32_t> offsets_;
+  std::vector<std::int32_t> neighbours_;
+};
+
+class ConvexMerger {
+ public:
+  explicit ConvexMerger(ConvexRule rule) : rule_(rule) {}
+
+  // Groups the patches of `blob` and writes group ids next_id, next_id + 1, ... to labels[pixel]
+  // of their points; leftover points stay 0. Returns the number of groups.
+  std::int32_t merge(const BlobSegments& points, const BlobRange& blob,
+                     const PatchNeighbours& neighbours, std::int32_t* labels, std::int32_t next_id);
+
+  std::int64_t merges() const { return merges_; }
+  void reset_counters() { merges_ = 0; }
+
+ private:
+  struct Node {
+    std::int32_t segment = 0;
+    FittedPlane plane;
+  };
+  // Share of node b's points not more than tolerance in front of node a's plane.
+  double behind_share(const BlobSegments& points, const Node& a, const Node& b) const;
+  std::int32_t find(std::int32_t i);
+
+  ConvexRule rule_;
+  std::vector<Node> nodes_;
+  std::vector<std::int32_t> parent_;
+  std::vector<std::int32_t> node_of_patch_;  // -1 outside the current blob
+  std::vector<std::int32_t> group_id_;
+  std::int64_t merges_ = 0;
+};
+
+}  // namespace facet::partition

@@ -1,0 +1,83 @@
+#include "partition/convex_stage.hpp"
+
+#include <utility>
+
+#include "facet/types/images.hpp"
+#include "facet/types/patches.hpp"
+#include "partition/object_labels.hpp"
+
+namespace facet::partition {
+
+StageSpec PartitionConvex::spec() {
+  return StageSpec(
+             "partition.convex",
+             "Objects as groups of adjacent patches that meet at convex junctions.\n"
+             "Per blob: every patch with at least min_patch_px points gets a least-squares "
+             "plane, normal towards the camera. Two adjacent patches of the blob are joined when "
+             "their normals differ by at least min_angle_deg (closer normals are a step between "
+             "two surfaces, not an edge of one body) and each has at least min_behind_share of "
+             "its points not more than tolerance_m in front of the other's plane: each lies on "
+             "its own side of the other, as the faces of one convex body do. Joined patches "
+             "(union-find) are objects; the blob's other pixels (in no patch, small patches, no "
+             "point) join the object they are fewest pixel steps from within the blob; a blob "
+             "with no patch is one object. Object ids follow the raster order of each object's "
+             "first pixel.")
+      .input<LabelImage>("blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background.")
+      .input<LabelImage>("patches", "Surface patch ids, CV_32SC1; 0 = in no patch.")
+      .input<PatchAdjacency>("adjacency", "Which patches touch (from grow.surfaces).")
+      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
+      .output<LabelImage>("objects", "Object ids 1..count, CV_32SC1; 0 = background.")
+      .param("tolerance_m", 0.01,
+             "Points closer than this to the other patch's plane count as behind it (sensor "
+             "noise, and the rounded edge where two faces meet).",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("min_behind_share", 0.9,
+             "Least share of each patch's points not in front of the other's plane for a "
+             "convex junction; below 1 so that outliers and curved patches still join.",
+             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("min_angle_deg", 30.0,
+             "Patches whose normals differ by less meet at a step, never joined.",
+             {.unit = "deg", .min = 0.0, .max = 180.0, .origin = "authors' later code (30 deg)"})
+      .param("min_patch_px", 100,
+             "Smaller patches have no reliable plane; they join an object as leftover pixels. "
+             "A pixel count: it scales with the image area.",
+             {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"})
+      .concurrency(Concurrency::clonable);
+}
+
+PartitionConvex::PartitionConvex(const Params& params)
+    : merger_(ConvexRule{params.get_double("tolerance_m"), params.get_double("min_behind_share"),
+                         params.get_double("min_angle_deg"),
+                         static_cast<std::int32_t>(params.get_int("min_patch_px"))}) {}
+
+void PartitionConvex::process(ProcessContext& ctx) {
+  const auto& blobs = ctx.input<LabelImage>("blobs");
+  const auto& patches = ctx.input<LabelImage>("patches");
+  const auto& adjacency = ctx.input<PatchAdjacency>("adjacency");
+  const auto& points = ctx.input<PointImage>("points");
+  LabelImage objects;
+  static_cast<FrameHeader&>(objects) = blobs;
+  if (blobs.labels.empty()) {
+    ctx.metric("objects", 0);
+    ctx.metric("merges", 0);
+    ctx.output("objects", std::move(objects));
+    return;
+  }
+  check_partition_inputs(blobs.labels, patches.labels, points.points);
+  segments_.build(blobs.labels, patches.labels, points.points);
+  neighbours_.build(adjacency, segments_.max_patch);
+  objects.labels = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
+  auto* labels = objects.labels.ptr<std::int32_t>();
+  merger_.reset_counters();
+  std::int32_t next_id = 1;
+  for (const BlobRange& blob : segments_.blobs) {
+    next_id += merger_.merge(segments_, blob, neighbours_, labels, next_id);
+  }
+  fill_blob_gaps(objects.labels, blobs.labels, next_id);
+  objects.count = relabel_in_raster_order(objects.labels);
+  ctx.metric("objects", objects.count);
+  ctx.metric("merges", static_cast<double>(merger_.merges()));
+  ctx.output("objects", std::move(objects));
+}
+
+}  // namespace facet::partition

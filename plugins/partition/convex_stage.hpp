@@ -1,0 +1,23 @@
+#pragma once
+// partition.convex: objects as groups of patches joined at convex junctions (the authors' later
+// "cutfree" test), an alternative to partition.bsp.
+
+#include "facet/stage.hpp"
+#include "partition/blob_segments.hpp"
+#include "partition/convex_merge.hpp"
+
+namespace facet::partition {
+
+class PartitionConvex final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit PartitionConvex(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  ConvexMerger merger_;
+  BlobSegments segments_;  // keeps its buffers from frame to frame
+  PatchNeighbours neighbours_;
+};
+
+}  // namespace facet::partition

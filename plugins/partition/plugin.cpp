@@ -1,0 +1,11 @@
+// The partition plugin: blobs and surface patches into objects (paper sec. II-B f, and the
+// authors' later convex-junction merging as an alternative).
+#include "facet/plugin.hpp"
+
+#include "partition/bsp_stage.hpp"
+#include "partition/convex_stage.hpp"
+
+FACET_PLUGIN("facet_partition", "0.1.0") {
+  registrar.add<facet::partition::PartitionBsp>();
+  registrar.add<facet::partition::PartitionConvex>();
+}

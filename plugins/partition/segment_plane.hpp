@@ -1,0 +1,34 @@
+#pragma once
+// Least-squares planes and bounding boxes of point ranges in the gathered arrays.
+
+#include <array>
+#include <cstdint>
+
+#include "partition/blob_segments.hpp"
+
+namespace facet::partition {
+
+// n·p + offset_m = 0, unit normal pointing towards the camera (n·centroid < 0): a positive
+// signed distance is "in front" of the surface, seen from the camera.
+struct FittedPlane {
+  std::array<float, 3> normal{0.0F, 0.0F, -1.0F};
+  float offset_m = 0.0F;
+  std::array<float, 3> centroid_m{0.0F, 0.0F, 0.0F};
+  bool valid = false;  // false for fewer than 3 points or a degenerate (collinear) set
+};
+
+// Axis-aligned bounding box, metres.
+struct Bounds {
+  std::array<float, 3> min_m{};
+  std::array<float, 3> max_m{};
+  bool empty = true;
+  void add(float x, float y, float z);
+  void merge(const Bounds& other);
+};
+
+// Total least squares (smallest eigenvector of the covariance) over points [begin, end).
+FittedPlane fit_plane(const BlobSegments& points, std::int32_t begin, std::int32_t end);
+
+Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t end);
+
+}  // namespace facet::partition
