@@ -1,11 +1,11 @@
 #pragma once
 // Normals by principal component analysis of a k x k window (the kernel behind normals.pca).
 
-#include <array>
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
 #include "normals/depth_space.hpp"
+#include "normals/window_moments.hpp"
 
 namespace facet::normals {
 
@@ -20,9 +20,10 @@ struct PcaOptions {
 // negative third component). NaN elsewhere. Invalid points are left out of the window, never
 // replaced by a value.
 //
-// Window sums are built separably (column sums over k rows, then k columns) in double
-// precision, so the covariance E[pp^T] - E[p]E[p]^T does not lose the small variance of a plane
-// to cancellation. Keeps its scratch rows; not thread-safe, one instance per stage.
+// Per row: window sums of the moments (WindowMoments, running sums in double), the covariance
+// and its smallest eigenvector in closed form for all pixels at once (a vectorised loop), then a
+// robust solver for the few pixels the closed form does not trust (the two smallest eigenvalues
+// nearly equal). Keeps its buffers; not thread-safe, one instance per stage.
 class PcaNormals {
  public:
   explicit PcaNormals(PcaOptions options);
@@ -31,14 +32,12 @@ class PcaNormals {
   void apply(const cv::Mat& z, const PixelGrid& grid, cv::Mat& normals);
 
  private:
-  // n, x, y, z, xx, xy, xz, yy, yz, zz
-  static constexpr int kMoments = 10;
-  PcaOptions options_;
-  void add_row_moments(const float* z, const float* col_factor, double row_factor, bool scale_by_z,
-                       int width);
+  void solve_untrusted(const float* centre_z, const PixelGrid& grid, int row, float* out) const;
 
-  std::array<std::vector<double>, kMoments> column_sums_;  // over the window's rows
-  std::array<std::vector<double>, kMoments> window_sums_;  // over the whole window
+  PcaOptions options_;
+  WindowMoments moments_;
+  // The current row's closed-form eigenvectors (NaN: not trusted), structure of arrays.
+  std::vector<double> direction_x_, direction_y_, direction_z_;
 };
 
 }  // namespace facet::normals

@@ -1,19 +1,15 @@
 #pragma once
 // The eigenvector of the smallest eigenvalue of a symmetric positive semi-definite 3x3 matrix,
-// the plane normal of a point covariance.
+// the robust (slow) path for the matrices the closed form does not trust.
 
 #include <Eigen/Core>
 
 namespace facet::normals {
 
-// cov: symmetric positive semi-definite. Returns a unit vector (sign arbitrary).
-//
-// The smallest eigenvalue is found by Newton's method on the characteristic polynomial from 0:
-// all its roots are real and >= 0, so from the left of the smallest root Newton converges to it
-// monotonically, quadratically once close, and for a point set sampled from a surface that root
-// is near 0, so a few steps suffice. No trigonometry (the closed form needs acos and cos). The
-// eigenvector is then the largest cross product of two rows of cov - lambda I. When the two
-// smallest eigenvalues (nearly) coincide that is ill-defined; Eigen's direct solver decides then.
+// cov: symmetric positive semi-definite. Returns a unit vector (sign arbitrary); the z axis when
+// cov is zero (all points equal: no direction). Eigen's iterative solver (Householder
+// tridiagonalisation and QL), accurate also when the two smallest eigenvalues (nearly) coincide,
+// where the closed form loses precision; the eigenvector is then any vector of their eigenspace.
 Eigen::Vector3d smallest_eigenvector(const Eigen::Matrix3d& cov);
 
 }  // namespace facet::normals
