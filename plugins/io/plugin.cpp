@@ -5,10 +5,12 @@
 #include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"
 #include "io/labels_sink.hpp"
+#include "io/objects_sink.hpp"
 
 FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::FramesSource>();
   registrar.add<facet::io::LabelsSink>();
   registrar.add<facet::io::DepthSink>();
   registrar.add<facet::io::EdgesSink>();
+  registrar.add<facet::io::ObjectsSink>();
 }

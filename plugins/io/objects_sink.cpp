@@ -1,0 +1,205 @@
+#include "io/objects_sink.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string_view>
+
+#include "io/output_folder.hpp"
+
+namespace facet::io {
+namespace {
+
+// A minimal JSON writer: objects and arrays with fixed key order, one value per line except for
+// short numeric arrays. Plugins do not link the framework, which has its own writer.
+class JsonText {
+ public:
+  void open_object(std::string_view key = {}) { open(key, '{'); }
+  void open_array(std::string_view key = {}) { open(key, '['); }
+  void close_object() { close('}'); }
+  void close_array() { close(']'); }
+
+  void number(std::string_view key, double value) { item(key, format_number(value)); }
+  void integer(std::string_view key, long long value) { item(key, std::to_string(value)); }
+  void boolean(std::string_view key, bool value) { item(key, value ? "true" : "false"); }
+  void string(std::string_view key, std::string_view value) { item(key, quote(value)); }
+  void null(std::string_view key) { item(key, "null"); }
+  template <class Vector>
+  void numbers(std::string_view key, const Vector& values) {
+    std::string text = "[";
+    for (Eigen::Index i = 0; i < values.size(); ++i) {
+      if (i > 0) text += ", ";
+      text += format_number(values[i]);
+    }
+    item(key, text + "]");
+  }
+
+  std::string finish() { return std::move(text_) + "\n"; }
+
+ private:
+  static std::string format_number(double value) {
+    if (!std::isfinite(value)) return "null";  // JSON has no NaN or infinity
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+  }
+  static std::string quote(std::string_view value) {
+    std::string out = "\"";
+    for (const char c : value) {
+      switch (c) {
+        case '"':
+          out += "\\\"";
+          break;
+        case '\\':
+          out += "\\\\";
+          break;
+        case '\n':
+          out += "\\n";
+          break;
+        case '\r':
+          out += "\\r";
+          break;
+        case '\t':
+          out += "\\t";
+          break;
+        default:
+          if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
+            out += escaped;
+          } else {
+            out += c;
+          }
+      }
+    }
+    return out + "\"";
+  }
+  void item(std::string_view key, std::string_view value) {
+    separate();
+    if (!key.empty()) text_ += quote(key) + ": ";
+    text_ += value;
+  }
+  void open(std::string_view key, char bracket) {
+    item(key, std::string_view(&bracket, 1));
+    first_ = true;
+    ++depth_;
+  }
+  void close(char bracket) {
+    --depth_;
+    text_ += '\n';
+    text_.append(2 * static_cast<std::size_t>(depth_), ' ');
+    text_ += bracket;
+    first_ = false;
+  }
+  void separate() {
+    if (depth_ == 0) return;
+    if (!first_) text_ += ',';
+    text_ += '\n';
+    text_.append(2 * static_cast<std::size_t>(depth_), ' ');
+    first_ = false;
+  }
+
+  std::string text_;
+  int depth_ = 0;
+  bool first_ = true;
+};
+
+void write_pose(JsonText& json, const Eigen::Isometry3d& pose) {
+  json.numbers("centre_m", pose.translation());
+  const Eigen::Quaterniond q(pose.linear());
+  json.numbers("quaternion_wxyz", Eigen::Vector4d(q.w(), q.x(), q.y(), q.z()));
+  json.open_array("rotation");  // rows of the 3x3 matrix: box/superquadric axes are its columns
+  for (int row = 0; row < 3; ++row)
+    json.numbers({}, Eigen::Vector3d(pose.linear().row(row)));
+  json.close_array();
+}
+
+void write_object(JsonText& json, const ObjectModel& object) {
+  json.open_object();
+  json.integer("id", object.id);
+  json.integer("pixel_count", object.pixel_count);
+  json.numbers("centroid_m", object.centroid_m);
+  if (object.bounds_m.isEmpty()) {
+    json.null("bounds_m");
+  } else {
+    json.open_object("bounds_m");
+    json.numbers("min", object.bounds_m.min());
+    json.numbers("max", object.bounds_m.max());
+    json.close_object();
+  }
+  json.open_object("box");
+  write_pose(json, object.box.pose);
+  json.numbers("half_extents_m", object.box.half_extents_m);
+  json.number("residual_m", object.box.residual_m);
+  json.close_object();
+  json.integer("support_plane", object.support_plane);
+  const Superquadric& sq = object.superquadric;
+  if (!sq.valid) {
+    json.null("superquadric");
+  } else {
+    json.open_object("superquadric");
+    json.numbers("size_m", sq.size_m);
+    json.number("epsilon1", sq.epsilon1);
+    json.number("epsilon2", sq.epsilon2);
+    write_pose(json, sq.pose);
+    json.number("residual_m", sq.residual);
+    json.close_object();
+  }
+  json.string("grasp", to_string(object.grasp));
+  json.close_object();
+}
+
+std::filesystem::path json_file(const std::filesystem::path& dir, const FrameInfo& frame) {
+  return std::filesystem::path(frame_file(dir, frame)).replace_extension(".json");
+}
+
+}  // namespace
+
+std::string objects_to_json(const ObjectList& list) {
+  JsonText json;
+  json.open_object();
+  json.open_object("frame");
+  json.string("stem", list.frame.stem);
+  json.integer("index", list.frame.index);
+  json.integer("timestamp_ns", list.frame.timestamp_ns);
+  json.close_object();
+  json.open_array("objects");
+  for (const ObjectModel& object : list.objects)
+    write_object(json, object);
+  json.close_array();
+  json.close_object();
+  return json.finish();
+}
+
+StageSpec ObjectsSink::spec() {
+  return StageSpec("io.objects",
+                   "Writes each frame's object list as <dir>/<stem>.json.\n"
+                   "One file per frame (frame_<index>.json without a stem): frame stem, index "
+                   "and timestamp, and per object its id, pixel count, centroid, axis-aligned "
+                   "bounds, oriented box, support plane, superquadric and grasp prototype, in "
+                   "metres in the camera frame. Schema: docs/objects-json.md. Deterministic "
+                   "formatting, so equal lists give equal files.")
+      .input<ObjectList>("objects", "Per-object shape models (shape.superquadric, shape.pca_box).")
+      .param("dir", "out/objects", "Output folder, created if missing.", {.required = true})
+      .concurrency(Concurrency::serial);
+}
+
+ObjectsSink::ObjectsSink(const Params& params) : dir_(params.get_string("dir")) {}
+
+void ObjectsSink::open(const OpenContext& /*ctx*/) {
+  ensure_folder(dir_);
+}
+
+void ObjectsSink::process(ProcessContext& ctx) {
+  if (!ctx.has_input("objects")) return;
+  const auto& list = ctx.input<ObjectList>("objects");
+  const std::filesystem::path file = json_file(dir_, list.frame);
+  const std::string text = objects_to_json(list);
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) throw StageError("cannot open '" + file.string() + "' for writing");
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();
+  if (!out) throw StageError("cannot write '" + file.string() + "'");
+}
+
+}  // namespace facet::io

@@ -1,0 +1,28 @@
+#pragma once
+// io.objects: writes each frame's object list as <dir>/<stem>.json (schema: docs/objects-json.md).
+
+#include <filesystem>
+#include <string>
+
+#include "facet/stage.hpp"
+#include "facet/types/geometry.hpp"
+
+namespace facet::io {
+
+class ObjectsSink final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit ObjectsSink(const Params& params);
+
+  void open(const OpenContext& ctx) override;
+  void process(ProcessContext& ctx) override;
+
+ private:
+  std::filesystem::path dir_;
+};
+
+// The JSON text io.objects writes for one frame: deterministic (fixed key order, numbers with
+// 9 significant digits, 2-space indentation), ending in a newline.
+std::string objects_to_json(const ObjectList& list);
+
+}  // namespace facet::io
