@@ -23,7 +23,7 @@ namespace facet::planes {
 
 struct SupportRule {
   float inlier_distance_m = 0.012F;   // delta: a point within it lies on the plane
-  float behind_margin_m = 0.03F;      // a point further than this behind a plane is behind it
+  float behind_margin_m = 0.05F;      // a point further than this behind a plane is behind it
   double min_view_fraction = 0.01;    // of the valid pixels, on the plane
   double max_behind_fraction = 0.05;  // of the object candidate pixels, behind the plane
   double min_object_fraction = 0.02;  // of the valid pixels: floor of the behind denominator
