@@ -130,7 +130,7 @@ SuperquadricFit fit_superquadric(const std::vector<Eigen::Vector3d>& points_m,
       state = candidate;
       current = std::move(next);
       damping = std::max(damping / 3.0, 1e-9);
-      if (gain < 1e-7 || step.norm() < 1e-8) break;
+      if (gain < 1e-5 || step.norm() < 1e-7) break;
     } else {
       damping *= 4.0;
       if (damping > 1e8) break;

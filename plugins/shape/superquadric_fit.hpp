@@ -12,9 +12,9 @@
 namespace facet::shape {
 
 struct SuperquadricFitOptions {
-  int max_points = 400;            // random subsample of the object's points used by the fit
+  int max_points = 200;            // random subsample of the object's points used by the fit
   std::uint64_t seed = 1;          // subsample seed (mixed with the object id by the caller)
-  int max_iterations = 40;         // LM iterations (accepted or rejected steps)
+  int max_iterations = 25;         // LM iterations (accepted or rejected steps)
   double support_weight = 1.0;     // contact term weight, relative to all points together
   double size_prior_weight = 0.1;  // pull of the log sizes towards the initial box (see .cpp)
   double initial_epsilon = 0.5;

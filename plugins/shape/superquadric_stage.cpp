@@ -28,12 +28,12 @@ StageSpec SuperquadricStage::spec() {
       "points used. The box output is the plain PCA box. The grasp prototype uses the "
       "superquadric's full extents. Metrics: objects, mean_residual_m, fit_ms.");
   declare_object_ports(spec);
-  spec.param("max_points", 400,
+  spec.param("max_points", 200,
              "The fit uses a random subsample of this many of an object's points (all if fewer).",
              {.min = 22.0, .max = 1.0e6, .origin = "measured: ~1 ms per object"})
       .param("seed", 1, "Seed of the subsample; the same seed gives the same fit.",
              {.min = 0.0, .max = 2.0e9})
-      .param("max_iterations", 40, "Levenberg-Marquardt iterations at most.",
+      .param("max_iterations", 25, "Levenberg-Marquardt iterations at most.",
              {.min = 1.0, .max = 1000.0})
       .param("support_weight", 1.0,
              "Weight of the contact term (lowest point on the support plane), relative to all "
