@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <vector>
+
+#include "grow/point_rows.hpp"
 
 namespace facet::grow {
 
@@ -17,16 +20,43 @@ struct AssignmentResult {
   std::int64_t unassigned_px = 0;  // valid pixels left at 0
 };
 
-// labels: CV_32SC1 patch ids, 0 = unassigned; updated in place. classes: CV_8UC1 PixelClass
-// (only valid pixels are assigned). points: CV_32FC3 in metres.
-//
 // Breadth-first propagation in rounds r = 1..radius_px: in round r, every unassigned valid pixel
 // that has an 8-neighbour labelled before round r takes the label of the neighbour closest to
 // it in 3D among those closer than max_distance_m (ties: the first in raster order). So a pixel
 // joins the patch it is fewest steps from, every step follows the surface, a depth step larger
 // than the gate is never crossed, and the source pixel lies within the (2 rho + 1)^2 window.
 // A round reads only labels from earlier rounds, so the result does not depend on scan order.
-AssignmentResult assign_to_nearest_patch(cv::Mat& labels, const cv::Mat& classes,
-                                         const cv::Mat& points, const AssignmentRule& rule);
+//
+// Keeps its working memory between frames, so one instance serves one thread.
+class EdgeAssignment {
+ public:
+  explicit EdgeAssignment(const AssignmentRule& rule);
+
+  // labels: CV_32SC1 patch ids, 0 = unassigned; updated in place. classes: CV_8UC1 PixelClass
+  // (only valid pixels are assigned). points: CV_32FC3 in metres. labels and points continuous.
+  AssignmentResult assign(cv::Mat& labels, const cv::Mat& classes, const cv::Mat& points);
+
+ private:
+  std::int64_t build_state(const cv::Mat& labels, const cv::Mat& classes);
+  int run_round_on_row(std::int32_t* labels, int row, std::uint8_t round);
+  bool row_may_change(int row, int round) const;
+  std::uint8_t* state_row(int row) { return state_.data() + (row + 1) * state_stride_ + 1; }
+
+  AssignmentRule rule_;
+  float gate_sq_m2_;
+  int width_ = 0;
+  int height_ = 0;
+  std::ptrdiff_t state_stride_ = 0;  // width + 2: one guard column on each side
+  // Per pixel, with a one-pixel guard frame of kInvalidState: the round in which the pixel got
+  // its label (0 = a patch from region growing), or kUnassignedState / kInvalidState.
+  std::vector<std::uint8_t> state_;
+  std::vector<std::uint8_t> candidates_;      // of one row in one round, as bytes 0/1
+  std::vector<std::int32_t> choices_;         // of one row in one round: 1 + neighbour index, or 0
+  std::ptrdiff_t neighbour_offsets_[8] = {};  // kNeighbourSteps as offsets in the label image
+  PointRowRing point_rows_;                   // the rows the wavefront is working on
+  // assigned_px_[r * (height + 2) + row + 1]: pixels of a row labelled in round r (a guard row
+  // above and below); round 0 marks every row as holding patch pixels.
+  std::vector<int> assigned_px_;
+};
 
 }  // namespace facet::grow

@@ -65,8 +65,8 @@ StageSpec GrowSurfaces::spec() {
 GrowSurfaces::GrowSurfaces(const Params& params)
     : connectivity_(static_cast<int>(params.get_int("connectivity"))),
       min_size_px_(params.get_int("min_size_px")),
-      assignment_{static_cast<int>(params.get_int("assign_radius_px")),
-                  params.get_double("assign_max_distance_m")} {}
+      assignment_(AssignmentRule{static_cast<int>(params.get_int("assign_radius_px")),
+                                 params.get_double("assign_max_distance_m")}) {}
 
 void GrowSurfaces::process(ProcessContext& ctx) {
   const auto& edges = ctx.input<EdgeImage>("edges");
@@ -85,8 +85,7 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   // whatever produced the edge mask.
   const cv::Mat classes = classify_pixels(edges.mask, xyz);
   SurfaceRegions regions = label_surface_regions(classes, connectivity_, min_size_px_);
-  const AssignmentResult assigned =
-      assign_to_nearest_patch(regions.labels, classes, xyz, assignment_);
+  const AssignmentResult assigned = assignment_.assign(regions.labels, classes, xyz);
 
   PatchAdjacency adjacency = find_patch_contacts(regions.labels, regions.count);
   static_cast<FrameHeader&>(adjacency) = points;

@@ -18,7 +18,7 @@ class GrowSurfaces final : public Stage {
  private:
   int connectivity_;
   std::int64_t min_size_px_;
-  AssignmentRule assignment_;
+  EdgeAssignment assignment_;  // keeps its buffers from frame to frame
 };
 
 }  // namespace facet::grow
