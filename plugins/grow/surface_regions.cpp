@@ -1,6 +1,8 @@
 #include "grow/surface_regions.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -15,21 +17,49 @@ struct Run {
   int end;    // one past the last column
 };
 
+// One bit per pixel of a row, set for surface pixels (bit x % 64 of word x / 64).
+void surface_bits(const unsigned char* classes, int width, std::vector<std::uint64_t>& bits) {
+  bits.assign(static_cast<std::size_t>(width) / 64 + 1, 0);
+  int x = 0;
+  // 8 pixels at a time: classes are 0, 1 or 2 and bit 1 marks kSurfacePixel. The multiplication
+  // gathers bit 0 of byte i into bit 56 + i (the partial products never overlap).
+  for (; x + 8 <= width; x += 8) {
+    std::uint64_t word = 0;
+    std::memcpy(&word, classes + x, sizeof(word));
+    const std::uint64_t flags = (word >> 1) & 0x0101010101010101ULL;
+    const std::uint64_t byte = (flags * 0x0102040810204080ULL) >> 56;
+    bits[static_cast<std::size_t>(x / 64)] |= byte << (x % 64);
+  }
+  for (; x < width; ++x) {
+    if (classes[x] == kSurfacePixel) bits[static_cast<std::size_t>(x / 64)] |= 1ULL << (x % 64);
+  }
+}
+
+// The first column at or after `from` whose bit equals `value`, or `width`.
+int next_column(const std::vector<std::uint64_t>& bits, int from, bool value, int width) {
+  while (from < width) {
+    const std::uint64_t word = bits[static_cast<std::size_t>(from / 64)];
+    const std::uint64_t wanted = (value ? word : ~word) >> (from % 64);
+    if (wanted != 0) return std::min(from + __builtin_ctzll(wanted), width);
+    from = (from / 64 + 1) * 64;
+  }
+  return width;
+}
+
+// Runs of surface pixels found with bit scans: a row of 640 pixels is 10 words.
 std::vector<Run> find_runs(const cv::Mat& classes, std::vector<std::size_t>& row_first) {
   std::vector<Run> runs;
+  std::vector<std::uint64_t> bits;
   row_first.assign(static_cast<std::size_t>(classes.rows) + 1, 0);
+  const int width = classes.cols;
   for (int row = 0; row < classes.rows; ++row) {
     row_first[static_cast<std::size_t>(row)] = runs.size();
-    const unsigned char* in = classes.ptr<unsigned char>(row);
-    int x = 0;
-    while (x < classes.cols) {
-      while (x < classes.cols && in[x] != kSurfacePixel)
-        ++x;
-      if (x == classes.cols) break;
-      const int begin = x;
-      while (x < classes.cols && in[x] == kSurfacePixel)
-        ++x;
-      runs.push_back({row, begin, x});
+    surface_bits(classes.ptr<unsigned char>(row), width, bits);
+    int x = next_column(bits, 0, true, width);
+    while (x < width) {
+      const int end = next_column(bits, x, false, width);
+      runs.push_back({row, x, end});
+      x = next_column(bits, end, true, width);
     }
   }
   row_first.back() = runs.size();
