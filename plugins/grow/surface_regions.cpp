@@ -81,6 +81,14 @@ class RunSets {
     }
     return i;
   }
+  // Points every run straight at its root in one forward pass: a parent always has a smaller
+  // index, so it already points at the root when its children are visited.
+  void flatten() {
+    for (std::size_t i = 0; i < parent_.size(); ++i)
+      parent_[i] = parent_[parent_[i]];
+  }
+  // After flatten().
+  std::size_t root(std::size_t i) const { return parent_[i]; }
   void join(std::size_t a, std::size_t b) {
     a = find(a);
     b = find(b);
@@ -126,20 +134,21 @@ SurfaceRegions label_surface_regions(const cv::Mat& classes, int connectivity,
   const std::vector<Run> runs = find_runs(classes, row_first);
   RunSets sets(runs.size());
   join_touching_runs(runs, row_first, connectivity, sets);
+  sets.flatten();
 
   std::vector<std::int64_t> size_px(runs.size(), 0);
   for (std::size_t i = 0; i < runs.size(); ++i)
-    size_px[sets.find(i)] += runs[i].end - runs[i].begin;
+    size_px[sets.root(i)] += runs[i].end - runs[i].begin;
 
   // Roots come in raster order of their first pixel; number the large enough ones.
   SurfaceRegions result;
   std::vector<std::int32_t> id(runs.size(), 0);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (sets.find(i) == i && size_px[i] >= min_size_px) id[i] = ++result.count;
+    if (sets.root(i) == i && size_px[i] >= min_size_px) id[i] = ++result.count;
   }
   result.labels = cv::Mat::zeros(classes.size(), CV_32SC1);
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const std::int32_t label = id[sets.find(i)];
+    const std::int32_t label = id[sets.root(i)];
     if (label == 0) continue;
     std::int32_t* out = result.labels.ptr<std::int32_t>(runs[i].row);
     for (int x = runs[i].begin; x < runs[i].end; ++x)
