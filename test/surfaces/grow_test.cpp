@@ -295,6 +295,28 @@ TEST(GrowSurfaces, AgreesWithThePlainReferenceOnRealFrames) {
   }
 }
 
+// The stage keeps its working buffers from frame to frame: a second frame of another size
+// must come out exactly as from a fresh instance.
+TEST(GrowSurfaces, ReusedInstanceMatchesAFreshOneAcrossFrameSizes) {
+  FlatInput first = flat_input(30, 30);
+  first.edges.mask.colRange(14, 17).setTo(255);
+  FlatInput second = flat_input(37, 13);
+  second.edges.mask.rowRange(4, 7).setTo(255);
+  second.points.points.at<cv::Vec3f>(5, 20)[2] = 1.05F;
+  const Overrides params{{"min_size_px", std::int64_t{1}}};
+  testing::StageRunner<grow::GrowSurfaces> runner(params);
+  for (const FlatInput* input : {&first, &second, &first}) {
+    runner.set_input("edges", Packet::make(input->edges));
+    runner.set_input("points", Packet::make(input->points));
+    runner.run();
+    const GrowResult fresh = run_grow(input->edges, input->points, params);
+    const auto& labels = runner.output<LabelImage>("patches").labels;
+    ASSERT_EQ(labels.size(), fresh.patches.labels.size());
+    EXPECT_EQ(cv::countNonZero(labels != fresh.patches.labels), 0);
+    EXPECT_EQ(runner.output<PatchAdjacency>("adjacency").pairs, fresh.adjacency.pairs);
+  }
+}
+
 TEST(GrowSurfaces, SpecDocumentsEveryPortAndParameter) {
   const StageSpec spec = grow::GrowSurfaces::spec();
   for (const auto& port : spec.inputs())
