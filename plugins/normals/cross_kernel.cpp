@@ -81,44 +81,47 @@ void fill_nan(float* out, int count) {
 }
 
 template <bool kMetric, Triangle kTriangle>
-void cross_image(const cv::Mat& z, const PixelGrid& grid, int r, cv::Mat& normals) {
+void cross_image_row(const cv::Mat& z, const PixelGrid& grid, int r, int y, float* out) {
   const int width = z.cols;
   const int height = z.rows;
-  for (int y = 0; y < height; ++y) {
-    auto* out = normals.ptr<float>(y);
-    if (y < r || y >= height - r || width <= 2 * r) {
-      fill_nan(out, 3 * width);
-      continue;
-    }
-    const RowTriple rows{z.ptr<float>(y - r),
-                         z.ptr<float>(y),
-                         z.ptr<float>(y + r),
-                         grid.row_factor[static_cast<std::size_t>(y - r)],
-                         grid.row_factor[static_cast<std::size_t>(y)],
-                         grid.row_factor[static_cast<std::size_t>(y + r)]};
-    fill_nan(out, 3 * r);
-    cross_row<kMetric, kTriangle>(rows, grid.col_factor.data(), r, width, out);
-    fill_nan(out + 3 * (width - r), 3 * r);
+  if (y < r || y >= height - r || width <= 2 * r) {
+    fill_nan(out, 3 * width);
+    return;
   }
+  const RowTriple rows{z.ptr<float>(y - r),
+                       z.ptr<float>(y),
+                       z.ptr<float>(y + r),
+                       grid.row_factor[static_cast<std::size_t>(y - r)],
+                       grid.row_factor[static_cast<std::size_t>(y)],
+                       grid.row_factor[static_cast<std::size_t>(y + r)]};
+  fill_nan(out, 3 * r);
+  cross_row<kMetric, kTriangle>(rows, grid.col_factor.data(), r, width, out);
+  fill_nan(out + 3 * (width - r), 3 * r);
 }
 
 }  // namespace
 
-void cross_normals(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options,
-                   cv::Mat& normals) {
+void cross_normals_row(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options, int y,
+                       float* out) {
   CV_Assert(z.type() == CV_32FC1);
   CV_Assert(grid.col_factor.size() == static_cast<std::size_t>(z.cols));
   CV_Assert(grid.row_factor.size() == static_cast<std::size_t>(z.rows));
-  normals.create(z.rows, z.cols, CV_32FC3);
   const int r = options.radius_px;
   const bool paper = options.triangle == Triangle::paper;
   if (grid.scale_by_z) {
-    paper ? cross_image<true, Triangle::paper>(z, grid, r, normals)
-          : cross_image<true, Triangle::centred>(z, grid, r, normals);
+    paper ? cross_image_row<true, Triangle::paper>(z, grid, r, y, out)
+          : cross_image_row<true, Triangle::centred>(z, grid, r, y, out);
   } else {
-    paper ? cross_image<false, Triangle::paper>(z, grid, r, normals)
-          : cross_image<false, Triangle::centred>(z, grid, r, normals);
+    paper ? cross_image_row<false, Triangle::paper>(z, grid, r, y, out)
+          : cross_image_row<false, Triangle::centred>(z, grid, r, y, out);
   }
+}
+
+void cross_normals(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options,
+                   cv::Mat& normals) {
+  normals.create(z.rows, z.cols, CV_32FC3);
+  for (int y = 0; y < z.rows; ++y)
+    cross_normals_row(z, grid, options, y, normals.ptr<float>(y));
 }
 
 }  // namespace facet::normals

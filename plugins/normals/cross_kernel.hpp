@@ -26,4 +26,9 @@ struct CrossOptions {
 void cross_normals(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options,
                    cv::Mat& normals);
 
+// Row y of the same (3 * z.cols floats into `out`), for consumers that work row by row and would
+// otherwise write and re-read a whole image.
+void cross_normals_row(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options, int y,
+                       float* out);
+
 }  // namespace facet::normals

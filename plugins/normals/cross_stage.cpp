@@ -77,8 +77,10 @@ void CrossStage::process(ProcessContext& ctx) {
   if (smooth_radius_px_ == 0) {
     cross_normals(z_, grid_, options_, output.normals);
   } else {
-    cross_normals(z_, grid_, options_, unsmoothed_);
-    smoother_.apply(unsmoothed_, output.normals);
+    // Row by row: the unsmoothed normals never leave the cache as a whole image.
+    smoother_.apply(
+        z_.rows, z_.cols,
+        [&](int y, float* row) { cross_normals_row(z_, grid_, options_, y, row); }, output.normals);
   }
   ctx.output("normals", std::move(output));
 }

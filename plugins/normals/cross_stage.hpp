@@ -23,7 +23,6 @@ class CrossStage final : public Stage {
   NormalSmoother smoother_;
   // Per-frame scratch kept between frames, so a stream allocates only the output images.
   cv::Mat z_;
-  cv::Mat unsmoothed_;
   PixelGrid grid_;
 };
 
