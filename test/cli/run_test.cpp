@@ -30,14 +30,26 @@ TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
 
   const auto inputs = count_pngs(source_dir() / "data/mosd/depth");
   ASSERT_GT(inputs, 0u);
-  EXPECT_EQ(count_pngs(out.path() / "depth"), inputs);
+  EXPECT_EQ(count_pngs(out.path() / "labels"), inputs);
 
-  // A written frame is a 16-bit depth image of the input's size.
-  for (const auto& entry : std::filesystem::directory_iterator(out.path() / "depth")) {
-    const cv::Mat image = cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED);
-    EXPECT_EQ(image.type(), CV_16UC1) << entry.path();
-    EXPECT_EQ(image.cols, 640);
-    EXPECT_EQ(image.rows, 480);
+  // A label image per frame: 16-bit object ids of the input's size, with at least one object
+  // (every bundled frame shows two or more) and far fewer than noise would give.
+  for (const auto& entry : std::filesystem::directory_iterator(out.path() / "labels")) {
+    const cv::Mat labels = cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED);
+    EXPECT_EQ(labels.type(), CV_16UC1) << entry.path();
+    EXPECT_EQ(labels.cols, 640);
+    EXPECT_EQ(labels.rows, 480);
+    double lo = 0, hi = 0;
+    cv::minMaxLoc(labels, &lo, &hi);
+    EXPECT_GE(hi, 1.0) << entry.path();
+    EXPECT_LE(hi, 30.0) << entry.path();
+    // The object list of the same frame describes the same objects.
+    const auto object_file =
+        out.path() / "objects" / entry.path().filename().replace_extension(".json");
+    const std::string objects = read_file(object_file);
+    EXPECT_NE(objects.find("\"superquadric\""), std::string::npos) << object_file;
+    EXPECT_NE(objects.find("\"id\": " + std::to_string(static_cast<int>(hi))), std::string::npos)
+        << object_file << "\n" << objects.substr(0, 400);
   }
 
   const std::string stats = read_file(json);
@@ -57,7 +69,7 @@ TEST(Run, FramesOptionLimitsTheRun) {
   const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 2 --param output=" +
                               shell_quote(out.path().string()) + " --json " + shell_quote(json.string()));
   ASSERT_EQ(result.exit_code, 0) << result.out;
-  EXPECT_EQ(count_pngs(out.path() / "depth"), 2u);
+  EXPECT_EQ(count_pngs(out.path() / "labels"), 2u);
   EXPECT_NE(read_file(json).find("\"frames\": 2"), std::string::npos);
 }
 
