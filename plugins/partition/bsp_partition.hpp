@@ -30,7 +30,7 @@ struct BspRule {
   double min_face_ratio = 0.1;     // k_fe: face points / other points below it: blob not split
   bool keep_patches = true;        // a patch goes whole to the side holding most of its points
   std::int32_t max_splits = 64;    // per blob, a guard against pathological input
-  PlaneOwner plane_owner = PlaneOwner::boxes;
+  PlaneOwner plane_owner = PlaneOwner::behind;
 };
 
 class BspPartitioner {

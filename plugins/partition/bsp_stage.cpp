@@ -56,11 +56,12 @@ StageSpec PartitionBsp::spec() {
              "Never cut a surface patch; it goes whole to the side holding most of its points. "
              "Fixes the split-order weakness (paper Fig. 9 right).",
              {.origin = "paper: announced fix"})
-      .param("plane_owner", "boxes",
+      .param("plane_owner", "behind",
              "Which side the on-plane points join: 'boxes' = the paper's bounding-box rule "
              "(eq. 5); 'behind' = the side behind the face, where the body of a visible face "
              "lies (plane normals point towards the camera).",
-             {.choices = {std::string("boxes"), std::string("behind")}, .origin = "paper (eq. 5)"})
+             {.choices = {std::string("boxes"), std::string("behind")},
+              .origin = "measured on the mOSD learn frames: F 0.954 (behind) vs 0.949 (boxes)"})
       .param("max_splits", 64, "Most splits per blob; a guard against pathological input.",
              {.min = 0.0, .max = 1.0e6})
       .concurrency(Concurrency::clonable);
