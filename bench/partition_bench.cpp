@@ -62,3 +62,4 @@ BENCHMARK(BM_PartitionBsp)->Arg(5)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::
 BENCHMARK(BM_PartitionConvex)->Arg(5)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+BENCHMARK_MAIN();
