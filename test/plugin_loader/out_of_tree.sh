@@ -45,7 +45,11 @@ if command -v ninja >/dev/null; then generator=(-G Ninja); fi
 template_build=$work/template-build
 step "configure the template against the installed SDK" \
   cmake -S "$source_dir/sdk/template" -B "$template_build" "${generator[@]}" \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix"
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
+  -DCMAKE_CXX_FLAGS="${FACET_TEMPLATE_CXX_FLAGS:-}" \
+  -DCMAKE_EXE_LINKER_FLAGS="${FACET_TEMPLATE_LINKER_FLAGS:-}" \
+  -DCMAKE_MODULE_LINKER_FLAGS="${FACET_TEMPLATE_LINKER_FLAGS:-}" \
+  -DCMAKE_SHARED_LINKER_FLAGS="${FACET_TEMPLATE_LINKER_FLAGS:-}"
 step "build the template" cmake --build "$template_build" -j 2
 step "run the template's unit tests" ctest --test-dir "$template_build" --output-on-failure
 
