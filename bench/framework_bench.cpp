@@ -1,12 +1,14 @@
 // The framework's own cost: what a stage call costs beyond the stage's work, and proof that a
 // fan-out shares one image instead of copying it.
 //
-//   build/bin/facet_bench_framework --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
+//   build/bin/facet_bench_framework --benchmark_repetitions=10
+//   --benchmark_report_aggregates_only=true
 //
 // BM_PassThroughChain/N runs a source and N pass-through stages over 640x480 depth frames; the
 // counter `per_stage_call` is (time per frame) / (N + 1); the framework's
-// overhead per added stage is (per_frame(10) - per_frame(0)) / 10. BM_FanOut feeds one image to four
-// consumers and counts distinct pixel buffers they saw beyond the first (`image_copies`, must be 0).
+// overhead per added stage is (per_frame(10) - per_frame(0)) / 10. BM_FanOut feeds one image to
+// four consumers and counts distinct pixel buffers they saw beyond the first (`image_copies`, must
+// be 0).
 
 #include <benchmark/benchmark.h>
 
@@ -110,9 +112,9 @@ void BM_PassThroughChain(benchmark::State& state) {
   // Inverted rates: seconds per frame and per stage call (the source counts as a call).
   state.counters["per_frame"] =
       benchmark::Counter(frames, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["per_stage_call"] = benchmark::Counter(
-      frames * static_cast<double>(stages + 1),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["per_stage_call"] =
+      benchmark::Counter(frames * static_cast<double>(stages + 1),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_PassThroughChain)->Arg(0)->Arg(10)->Unit(benchmark::kMicrosecond);
 

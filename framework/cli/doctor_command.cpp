@@ -40,7 +40,8 @@ void add_doctor_command(CLI::App& app, int& exit_code) {
       std::cout << "  " << plugin->name << " " << plugin->version << "  " << plugin->file.string()
                 << "\n      SDK " << plugin->sdk_version << ", toolchain " << plugin->toolchain
                 << ", " << plugin->stages.size() << " stage(s):";
-      for (const auto& stage : plugin->stages) std::cout << " " << stage;
+      for (const auto& stage : plugin->stages)
+        std::cout << " " << stage;
       std::cout << "\n";
     }
     std::cout << "\nload failures:" << (registry.failures().empty() ? " none\n" : "\n");

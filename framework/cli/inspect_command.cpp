@@ -42,8 +42,8 @@ void add_inspect_command(CLI::App& app, int& exit_code) {
         }
         std::cerr << "\n";
         for (const auto& failure : registry.failures()) {
-          std::cerr << "note: a plugin failed to load and may provide it: "
-                    << failure.file.string() << ": " << failure.reason << "\n";
+          std::cerr << "note: a plugin failed to load and may provide it: " << failure.file.string()
+                    << ": " << failure.reason << "\n";
         }
         exit_code = registry.failures().empty() ? kUsage : kPluginFailure;
         continue;

@@ -1,8 +1,8 @@
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <iostream>
 #include <memory>
-
-#include <fmt/format.h>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -18,7 +18,8 @@ void add_list_command(CLI::App& app, int& exit_code) {
   command->callback([plugins, &exit_code] {
     const Registry registry = load_registry(*plugins, {});
     std::size_t width = 0;
-    for (const auto& name : registry.stage_names()) width = std::max(width, name.size());
+    for (const auto& name : registry.stage_names())
+      width = std::max(width, name.size());
     for (const auto& name : registry.stage_names()) {
       const StageEntry& entry = *registry.find(name);
       std::cout << fmt::format("{:<{}}  {:<16} {}\n", name, width, entry.plugin->name,

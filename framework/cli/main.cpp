@@ -8,9 +8,10 @@
 #include "facet/sdk_version.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"facet — model-free 3D scene segmentation from depth images, as YAML graphs of "
-               "stage plugins.",
-               "facet"};
+  CLI::App app{
+      "facet — model-free 3D scene segmentation from depth images, as YAML graphs of "
+      "stage plugins.",
+      "facet"};
   app.set_version_flag("--version", std::string("facet ") + FACET_SDK_VERSION_STRING);
   app.require_subcommand(1);
   app.footer(

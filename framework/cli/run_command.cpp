@@ -1,10 +1,10 @@
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <fstream>
 #include <iostream>
 #include <memory>
-
-#include <fmt/format.h>
-#include <unistd.h>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -39,8 +39,8 @@ class ProgressLine {
     if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
     shown_ = true;
-    std::cerr << fmt::format("\r\033[Kframe {:>6}  {:<24}  {:7.2f} ms", event.index + 1,
-                             event.stem, event.frame_ms)
+    std::cerr << fmt::format("\r\033[Kframe {:>6}  {:<24}  {:7.2f} ms", event.index + 1, event.stem,
+                             event.frame_ms)
               << std::flush;
   }
   void finish() {

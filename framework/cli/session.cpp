@@ -30,7 +30,8 @@ void add_graph_options(CLI::App& command, GraphOptions& options) {
                      "Override a graph parameter: name=value (repeatable)");
   command.add_option("--set,-s", options.sets,
                      "Override a node parameter: node.param=value (repeatable, applied last)");
-  command.add_option("--variant,-V", options.variant, "Apply the variant NAME defined in the graph");
+  command.add_option("--variant,-V", options.variant,
+                     "Apply the variant NAME defined in the graph");
 }
 
 std::string plugin_path_environment() {
@@ -41,9 +42,9 @@ std::string plugin_path_environment() {
 Registry load_registry(const PluginOptions& plugins,
                        const std::vector<std::filesystem::path>& graph_plugin_paths) {
   Registry registry;
-  load_plugins(plugin_search_dirs(plugins.plugin_paths, plugin_path_environment(),
-                                  graph_plugin_paths),
-               registry);
+  load_plugins(
+      plugin_search_dirs(plugins.plugin_paths, plugin_path_environment(), graph_plugin_paths),
+      registry);
   return registry;
 }
 

@@ -30,9 +30,8 @@ void write_dot(std::ostream& out, const ValidatedGraph& graph) {
       if (!node.inputs[port]) continue;
       const auto& from = graph.nodes[node.inputs[port]->from_node];
       const auto& from_port = from.stage->spec.outputs()[node.inputs[port]->from_port];
-      out << "  " << quoted(from.id) << " -> " << quoted(node.id)
-          << " [label=" << quoted(from_port.name + " → " + inputs[port].name + "\n" +
-                                  from_port.type_key)
+      out << "  " << quoted(from.id) << " -> " << quoted(node.id) << " [label="
+          << quoted(from_port.name + " → " + inputs[port].name + "\n" + from_port.type_key)
           << "];\n";
     }
   }

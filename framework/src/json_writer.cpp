@@ -9,7 +9,8 @@ namespace facet {
 void JsonWriter::newline() {
   if (indent_ <= 0) return;
   out_ << '\n';
-  for (std::size_t i = 0; i < levels_.size() * static_cast<std::size_t>(indent_); ++i) out_ << ' ';
+  for (std::size_t i = 0; i < levels_.size() * static_cast<std::size_t>(indent_); ++i)
+    out_ << ' ';
 }
 
 void JsonWriter::before_value() {

@@ -16,9 +16,9 @@ void Registry::add_plugin(std::shared_ptr<const PluginInfo> plugin,
         return p.file.empty() ? p.name + " (built in)" : p.file.string();
       };
       failures_.push_back(
-          {plugin->file, "stage '" + spec.name() + "' is provided by two plugins: " +
-                             describe(*it->second.plugin) + " and " + describe(*plugin) +
-                             "; the second was ignored"});
+          {plugin->file, "stage '" + spec.name() +
+                             "' is provided by two plugins: " + describe(*it->second.plugin) +
+                             " and " + describe(*plugin) + "; the second was ignored"});
       continue;
     }
     stages_.emplace(spec.name(), StageEntry{library, spec, plugin});
@@ -32,7 +32,8 @@ void Registry::add_builtin(const std::vector<StageSpec>& stages) {
   info->version = FACET_SDK_VERSION_STRING;
   info->sdk_version = FACET_SDK_VERSION_STRING;
   info->toolchain = sdk_toolchain_fingerprint();
-  for (const auto& spec : stages) info->stages.push_back(spec.name());
+  for (const auto& spec : stages)
+    info->stages.push_back(spec.name());
   add_plugin(std::move(info), stages, nullptr);
 }
 
@@ -44,7 +45,8 @@ const StageEntry* Registry::find(std::string_view stage_name) const {
 std::vector<std::string> Registry::stage_names() const {
   std::vector<std::string> names;
   names.reserve(stages_.size());
-  for (const auto& [name, entry] : stages_) names.push_back(name);
+  for (const auto& [name, entry] : stages_)
+    names.push_back(name);
   return names;  // std::map keeps them sorted
 }
 

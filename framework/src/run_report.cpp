@@ -1,9 +1,9 @@
 #include "facet/framework/run_report.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <numeric>
-
-#include <fmt/format.h>
 
 #include "facet/framework/json_writer.hpp"
 #include "facet/framework/statistics.hpp"

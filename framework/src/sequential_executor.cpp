@@ -113,8 +113,9 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
       auto inputs = ctx.inputs();
       for (std::size_t port = 0; port < inputs.size(); ++port) {
         const auto& connection = node.spec->inputs[port];
-        inputs[port] = connection ? nodes_[connection->from_node]->ctx->outputs()[connection->from_port]
-                                  : Packet();
+        inputs[port] = connection
+                           ? nodes_[connection->from_node]->ctx->outputs()[connection->from_port]
+                           : Packet();
         if (inputs[port].empty() && input_specs[port].required) runnable = false;
       }
       if (!runnable) {

@@ -1,8 +1,8 @@
 #include "facet/framework/stage_doc.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace facet {
 namespace {
@@ -81,8 +81,10 @@ void write_stage_text(std::ostream& out, const StageEntry& entry) {
   out << "  concurrency: " << to_string(spec.concurrency()) << "\n";
   const auto port_width = [&] {
     std::size_t width = 4;
-    for (const auto& p : spec.inputs()) width = std::max(width, p.name.size());
-    for (const auto& p : spec.outputs()) width = std::max(width, p.name.size());
+    for (const auto& p : spec.inputs())
+      width = std::max(width, p.name.size());
+    for (const auto& p : spec.outputs())
+      width = std::max(width, p.name.size());
     return width;
   }();
   out << "\ninputs:" << (spec.inputs().empty() ? " none (source)\n" : "\n");
@@ -98,7 +100,8 @@ void write_stage_text(std::ostream& out, const StageEntry& entry) {
   for (const auto& param : spec.params()) {
     out << "  " << param.name << "  (" << describe_param(param) << ")\n";
     out << indented(param.doc, "      ") << "\n";
-    if (!param.options.origin.empty()) out << "      default from: " << param.options.origin << "\n";
+    if (!param.options.origin.empty())
+      out << "      default from: " << param.options.origin << "\n";
   }
 }
 
@@ -114,8 +117,8 @@ void write_stage_markdown(std::ostream& out, const StageEntry& entry) {
           << port.type_key << "` | " << table_cell(port.doc) << " |\n";
     }
     for (const auto& port : spec.outputs()) {
-      out << "| `" << port.name << "` | out | `" << port.type_key << "` | "
-          << table_cell(port.doc) << " |\n";
+      out << "| `" << port.name << "` | out | `" << port.type_key << "` | " << table_cell(port.doc)
+          << " |\n";
     }
     out << "\n";
   }
@@ -125,7 +128,7 @@ void write_stage_markdown(std::ostream& out, const StageEntry& entry) {
     for (const auto& param : spec.params()) {
       out << "| `" << param.name << "` | " << to_string(param.type) << " | "
           << (param.options.required ? std::string("required")
-                                   : fmt::format("`{}`", format_param_value(param.default_value)))
+                                     : fmt::format("`{}`", format_param_value(param.default_value)))
           << " | " << range_text(param) << " | " << param.options.unit << " | "
           << table_cell(param.doc) << " | " << table_cell(param.options.origin) << " |\n";
     }

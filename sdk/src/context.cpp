@@ -23,8 +23,8 @@ ProcessContext::ProcessContext(const StageSpec& spec, std::string node_id)
 const Packet& ProcessContext::input_packet(std::string_view port) const {
   const std::size_t i = index_of(spec_->inputs(), port);
   if (i == inputs_.size()) {
-    throw std::logic_error("stage '" + spec_->name() + "' has no input port '" +
-                           std::string(port) + "'");
+    throw std::logic_error("stage '" + spec_->name() + "' has no input port '" + std::string(port) +
+                           "'");
   }
   return inputs_[i];
 }
@@ -54,13 +54,14 @@ void ProcessContext::throw_bad_input(std::string_view port, std::string_view exp
   if (packet.empty()) {
     throw StageError("input '" + std::string(port) + "' is empty");
   }
-  throw StageError("input '" + std::string(port) + "' holds a " +
-                   std::string(packet.type_key()) + ", expected " + std::string(expected));
+  throw StageError("input '" + std::string(port) + "' holds a " + std::string(packet.type_key()) +
+                   ", expected " + std::string(expected));
 }
 
 void ProcessContext::begin_frame(std::int64_t frame_index) {
   frame_index_ = frame_index;
-  for (auto& out : outputs_) out = Packet();
+  for (auto& out : outputs_)
+    out = Packet();
   metrics_.clear();
   warnings_.clear();
   end_of_stream_ = false;

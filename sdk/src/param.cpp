@@ -115,9 +115,9 @@ std::optional<std::string> check_param_value(const ParamSpec& spec, const ParamV
 std::variant<ParamValue, std::string> parse_param_value(const ParamSpec& spec,
                                                         std::string_view text) {
   const auto fail = [&](std::string_view what) {
-    return std::variant<ParamValue, std::string>(std::in_place_index<1>,
-                                                 "expected " + std::string(what) + ", got '" +
-                                                     std::string(text) + "'");
+    return std::variant<ParamValue, std::string>(
+        std::in_place_index<1>,
+        "expected " + std::string(what) + ", got '" + std::string(text) + "'");
   };
   switch (spec.type) {
     case ParamType::boolean:

@@ -4,8 +4,7 @@
 
 namespace facet::testing {
 
-StageRunnerBase::StageRunnerBase(StageSpec spec,
-                                 const std::map<std::string, ParamValue>& overrides)
+StageRunnerBase::StageRunnerBase(StageSpec spec, const std::map<std::string, ParamValue>& overrides)
     : spec_(std::move(spec)), params_(spec_.default_params()) {
   for (const auto& [name, value] : overrides) {
     const ParamSpec* param = spec_.find_param(name);
@@ -53,7 +52,8 @@ void StageRunnerBase::run() {
   }
   ctx_->begin_frame(frame_++);
   auto inputs = ctx_->inputs();
-  for (std::size_t i = 0; i < inputs.size(); ++i) inputs[i] = pending_inputs_[i];
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    inputs[i] = pending_inputs_[i];
   stage_->process(*ctx_);
 }
 

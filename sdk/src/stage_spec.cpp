@@ -54,12 +54,15 @@ StageSpec& StageSpec::param(std::string name, std::string v, std::string doc, Pa
                    std::move(opt));
 }
 
-std::string StageSpec::summary() const { return doc_.substr(0, doc_.find('\n')); }
+std::string StageSpec::summary() const {
+  return doc_.substr(0, doc_.find('\n'));
+}
 
 namespace {
 template <class T>
 const T* find_named(const std::vector<T>& items, std::string_view name) {
-  const auto it = std::find_if(items.begin(), items.end(), [&](const T& i) { return i.name == name; });
+  const auto it =
+      std::find_if(items.begin(), items.end(), [&](const T& i) { return i.name == name; });
   return it == items.end() ? nullptr : &*it;
 }
 }  // namespace
@@ -76,7 +79,8 @@ const ParamSpec* StageSpec::find_param(std::string_view param) const {
 
 Params StageSpec::default_params() const {
   Params params;
-  for (const auto& p : params_) params.set(p.name, p.default_value);
+  for (const auto& p : params_)
+    params.set(p.name, p.default_value);
   return params;
 }
 

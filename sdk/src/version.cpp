@@ -2,6 +2,8 @@
 
 namespace facet {
 
-const char* sdk_toolchain_fingerprint() noexcept { return FACET_TOOLCHAIN_FINGERPRINT; }
+const char* sdk_toolchain_fingerprint() noexcept {
+  return FACET_TOOLCHAIN_FINGERPRINT;
+}
 
 }  // namespace facet

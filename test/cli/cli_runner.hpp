@@ -33,13 +33,15 @@ inline std::string shell_quote(const std::string& text) {
 
 // `arguments` is appended to the command line as written (quote paths with shell_quote).
 inline CliResult run_cli(const std::string& arguments, const std::string& environment = "") {
-  const std::string command = environment + " " + shell_quote(FACET_CLI) + " " + arguments + " 2>&1";
+  const std::string command =
+      environment + " " + shell_quote(FACET_CLI) + " " + arguments + " 2>&1";
   CliResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
   std::array<char, 4096> buffer{};
   std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), n);
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.out.append(buffer.data(), n);
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -52,7 +54,8 @@ inline std::string read_file(const std::filesystem::path& file) {
   return text.str();
 }
 
-
-inline std::filesystem::path source_dir() { return FACET_SOURCE_DIR; }
+inline std::filesystem::path source_dir() {
+  return FACET_SOURCE_DIR;
+}
 
 }  // namespace facet::test

@@ -58,7 +58,8 @@ TEST(Cli, DoctorListsSearchPathAndPlugins) {
 }
 
 TEST(Cli, ValidateAcceptsTheShippedGraph) {
-  const auto result = run_cli("validate " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  const auto result =
+      run_cli("validate " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
   EXPECT_EQ(result.exit_code, 0) << result.out;
   EXPECT_NE(result.out.find("is valid"), std::string::npos) << result.out;
 }
@@ -77,7 +78,8 @@ TEST(Cli, InvalidGraphExitsWith3AndPointsAtTheLine) {
 }
 
 TEST(Cli, DotPrintsNodesAndTypedEdges) {
-  const auto result = run_cli("dot " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  const auto result =
+      run_cli("dot " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
   ASSERT_EQ(result.exit_code, 0) << result.out;
   EXPECT_NE(result.out.find("digraph"), std::string::npos);
   EXPECT_NE(result.out.find("\"source\" -> \"median\""), std::string::npos) << result.out;

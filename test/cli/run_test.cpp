@@ -23,8 +23,8 @@ std::size_t count_pngs(const std::filesystem::path& dir) {
 TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
   TempDir out("facet-run-tabletop");
   const auto json = out.path() / "stats.json";
-  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " --param output=" +
-                              shell_quote(out.path().string()) + " --json " +
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) +
+                              " --param output=" + shell_quote(out.path().string()) + " --json " +
                               shell_quote(json.string()) + " --profile");
   ASSERT_EQ(result.exit_code, 0) << result.out;
 
@@ -49,13 +49,14 @@ TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
     const std::string objects = read_file(object_file);
     EXPECT_NE(objects.find("\"superquadric\""), std::string::npos) << object_file;
     EXPECT_NE(objects.find("\"id\": " + std::to_string(static_cast<int>(hi))), std::string::npos)
-        << object_file << "\n" << objects.substr(0, 400);
+        << object_file << "\n"
+        << objects.substr(0, 400);
   }
 
   const std::string stats = read_file(json);
   EXPECT_NE(stats.find("\"frames\": " + std::to_string(inputs)), std::string::npos) << stats;
-  for (const char* key : {"\"stages\"", "\"source\"", "\"median\"", "\"median_ms\"", "\"p95_ms\"",
-                          "\"total\""}) {
+  for (const char* key :
+       {"\"stages\"", "\"source\"", "\"median\"", "\"median_ms\"", "\"p95_ms\"", "\"total\""}) {
     EXPECT_NE(stats.find(key), std::string::npos) << key << "\n" << stats;
   }
   // --profile prints the per-stage table.
@@ -66,8 +67,9 @@ TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
 TEST(Run, FramesOptionLimitsTheRun) {
   TempDir out("facet-run-frames");
   const auto json = out.path() / "stats.json";
-  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 2 --param output=" +
-                              shell_quote(out.path().string()) + " --json " + shell_quote(json.string()));
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) +
+                              " -q --frames 2 --param output=" + shell_quote(out.path().string()) +
+                              " --json " + shell_quote(json.string()));
   ASSERT_EQ(result.exit_code, 0) << result.out;
   EXPECT_EQ(count_pngs(out.path() / "labels"), 2u);
   EXPECT_NE(read_file(json).find("\"frames\": 2"), std::string::npos);
@@ -75,21 +77,23 @@ TEST(Run, FramesOptionLimitsTheRun) {
 
 TEST(Run, SetOverridesANodeParameter) {
   TempDir out("facet-run-set");
-  const auto bad = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 1 --set median.size=4 --param output=" +
-                           shell_quote(out.path().string()));
+  const auto bad = run_cli(
+      "run " + shell_quote(kTabletop.string()) +
+      " -q --frames 1 --set median.size=4 --param output=" + shell_quote(out.path().string()));
   EXPECT_EQ(bad.exit_code, 3) << bad.out;
   EXPECT_NE(bad.out.find("size"), std::string::npos) << bad.out;
-  const auto good = run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 1 --set median.size=3 --param output=" +
-                            shell_quote(out.path().string()));
+  const auto good = run_cli(
+      "run " + shell_quote(kTabletop.string()) +
+      " -q --frames 1 --set median.size=3 --param output=" + shell_quote(out.path().string()));
   EXPECT_EQ(good.exit_code, 0) << good.out;
 }
 
 TEST(Run, MissingInputFolderIsARuntimeFailureNamingIt) {
   TempDir out("facet-run-missing");
   const auto missing = out.path() / "no-such-dataset";
-  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " --param input=" +
-                              shell_quote(missing.string()) + " --param output=" +
-                              shell_quote(out.path().string()));
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) +
+                              " --param input=" + shell_quote(missing.string()) +
+                              " --param output=" + shell_quote(out.path().string()));
   EXPECT_EQ(result.exit_code, 1) << result.out;
   EXPECT_NE(result.out.find("no-such-dataset"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("source"), std::string::npos) << result.out;
@@ -140,7 +144,8 @@ TEST(Run, FacesGraphWritesPatchesAndEdgesPerFrame) {
         cv::imread((out.path() / "edges" / entry.path().filename()).string(), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(edges.type(), CV_8UC1);
     // A binary mask: only 0 and 255.
-    EXPECT_EQ(cv::countNonZero(edges == 0) + cv::countNonZero(edges == 255), edges.rows * edges.cols);
+    EXPECT_EQ(cv::countNonZero(edges == 0) + cv::countNonZero(edges == 255),
+              edges.rows * edges.cols);
   }
 }
 
@@ -150,9 +155,9 @@ TEST(Run, EveryVariantOfTheAbGraphsIsValid) {
            {"ab_normals", {"cross_r1", "cross_r2", "pca3", "pca5", "integral"}},
            {"ab_edges", {"max1", "max3", "avg1", "avg3"}}}) {
     for (const auto& variant : variants) {
-      const auto result = run_cli("validate " +
-                                  shell_quote((source_dir() / "graphs" / (graph + ".yaml")).string()) +
-                                  " --variant " + variant);
+      const auto result = run_cli(
+          "validate " + shell_quote((source_dir() / "graphs" / (graph + ".yaml")).string()) +
+          " --variant " + variant);
       EXPECT_EQ(result.exit_code, 0) << graph << " " << variant << "\n" << result.out;
     }
   }

@@ -11,7 +11,7 @@ namespace {
 // What the test stages saw; reset by each test. Stages only see their Params, so tests observe
 // them through this probe.
 struct Probe {
-  std::vector<std::string> events;                        // "open id", "close id"
+  std::vector<std::string> events;                       // "open id", "close id"
   std::map<std::string, std::vector<const void*>> seen;  // node id → payload addresses
 };
 Probe& probe() {
@@ -29,7 +29,9 @@ class Counter final : public facet::Stage {
   }
   explicit Counter(const facet::Params& p)
       : frames_(p.get_int("frames")), gap_every_(p.get_int("gap_every")) {}
-  void open(const facet::OpenContext& ctx) override { probe().events.push_back("open " + ctx.node_id); }
+  void open(const facet::OpenContext& ctx) override {
+    probe().events.push_back("open " + ctx.node_id);
+  }
   void close() override { probe().events.push_back("close counter"); }
   void process(facet::ProcessContext& ctx) override {
     if (ctx.frame_index() >= frames_) {
@@ -110,7 +112,8 @@ class SequentialExecutorTest : public ::testing::Test {
       node.stage = registry_.find(desc.stage);
       EXPECT_NE(node.stage, nullptr) << desc.stage;
       node.params = node.stage->spec.default_params();
-      for (const auto& [name, value] : desc.params) node.params.set(name, value);
+      for (const auto& [name, value] : desc.params)
+        node.params.set(name, value);
       for (const auto& from : desc.inputs) {
         node.inputs.push_back(facet::Connection{index.at(from), 0});
       }
@@ -163,12 +166,16 @@ TEST_F(SequentialExecutorTest, FanOutSharesOnePayloadAmongAllConsumers) {
   for (std::size_t frame = 0; frame < 3; ++frame) {
     const void* first = probe().seen["a"].at(frame);
     EXPECT_NE(first, nullptr);
-    for (const char* id : {"b", "c", "d"}) EXPECT_EQ(probe().seen[id].at(frame), first) << id;
+    for (const char* id : {"b", "c", "d"})
+      EXPECT_EQ(probe().seen[id].at(frame), first) << id;
   }
 }
 
 TEST_F(SequentialExecutorTest, EmptyOutputSkipsConsumersWithARequiredInput) {
-  const auto g = graph({{"counter", "test.counter", {{"frames", std::int64_t{6}}, {"gap_every", std::int64_t{2}}}, {}},
+  const auto g = graph({{"counter",
+                         "test.counter",
+                         {{"frames", std::int64_t{6}}, {"gap_every", std::int64_t{2}}},
+                         {}},
                         {"sink", "test.record", {}, {"counter"}}});
   facet::SequentialExecutor executor(g);
   const auto stats = executor.run();
@@ -196,8 +203,8 @@ TEST_F(SequentialExecutorTest, StageFailureNamesNodeStageAndFrameAndClosesEveryt
 }
 
 TEST_F(SequentialExecutorTest, ConstructorFailureNamesTheNode) {
-  const auto g = graph({{"counter", "test.counter", {}, {}},
-                        {"device", "test.unbuildable", {}, {"counter"}}});
+  const auto g =
+      graph({{"counter", "test.counter", {}, {}}, {"device", "test.unbuildable", {}, {"counter"}}});
   try {
     facet::SequentialExecutor executor(g);
     FAIL() << "expected a RunError";

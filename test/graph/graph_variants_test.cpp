@@ -31,7 +31,8 @@ TEST(GraphVariants, NoVariantLeavesTheGraphAsWritten) {
   Diagnostics diagnostics;
   const GraphSpec graph = load_variant("", diagnostics);
   ASSERT_FALSE(diagnostics.has_errors()) << diagnostics.str();
-  EXPECT_EQ(graph.variants, (std::vector<std::string>{"big", "pca", "raw", "bare", "both", "bigger"}));
+  EXPECT_EQ(graph.variants,
+            (std::vector<std::string>{"big", "pca", "raw", "bare", "both", "bigger"}));
   EXPECT_EQ(find_param(*graph.find_node("median"), "size")->text, "3");
   EXPECT_EQ(graph.find_node("normals")->stage, "normals.cross");
 }

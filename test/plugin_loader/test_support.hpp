@@ -8,11 +8,9 @@
 #include <string>
 
 #include "facet/framework/registry.hpp"
-
 #include "temp_dir.hpp"
 
 namespace facet::test {
-
 
 // The directory and file of a test plugin built by test/plugin_loader/CMakeLists.txt.
 inline std::filesystem::path test_plugin_dir(const std::string& test_case) {

@@ -14,19 +14,23 @@ facet::ParamSpec spec_of(facet::ParamType type, facet::ParamValue value,
 TEST(ParseParam, ParsesEachType) {
   using facet::ParamType;
   using facet::ParamValue;
-  EXPECT_EQ(std::get<ParamValue>(facet::parse_param_value(spec_of(ParamType::integer, {std::int64_t{0}}), "42")),
+  EXPECT_EQ(std::get<ParamValue>(
+                facet::parse_param_value(spec_of(ParamType::integer, {std::int64_t{0}}), "42")),
             ParamValue(std::int64_t{42}));
   EXPECT_EQ(std::get<ParamValue>(facet::parse_param_value(spec_of(ParamType::real, 0.0), "0.85")),
             ParamValue(0.85));
-  EXPECT_EQ(std::get<ParamValue>(facet::parse_param_value(spec_of(ParamType::boolean, false), "true")),
-            ParamValue(true));
-  EXPECT_EQ(std::get<ParamValue>(facet::parse_param_value(spec_of(ParamType::string, std::string()), "x y")),
+  EXPECT_EQ(
+      std::get<ParamValue>(facet::parse_param_value(spec_of(ParamType::boolean, false), "true")),
+      ParamValue(true));
+  EXPECT_EQ(std::get<ParamValue>(
+                facet::parse_param_value(spec_of(ParamType::string, std::string()), "x y")),
             ParamValue(std::string("x y")));
 }
 
 TEST(ParseParam, RejectsMalformedText) {
   using facet::ParamType;
-  EXPECT_EQ(facet::parse_param_value(spec_of(ParamType::integer, std::int64_t{0}), "4.5").index(), 1u);
+  EXPECT_EQ(facet::parse_param_value(spec_of(ParamType::integer, std::int64_t{0}), "4.5").index(),
+            1u);
   EXPECT_EQ(facet::parse_param_value(spec_of(ParamType::integer, std::int64_t{0}), "").index(), 1u);
   EXPECT_EQ(facet::parse_param_value(spec_of(ParamType::real, 0.0), "abc").index(), 1u);
   EXPECT_EQ(facet::parse_param_value(spec_of(ParamType::real, 0.0), "nan").index(), 1u);

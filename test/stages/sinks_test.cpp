@@ -151,7 +151,8 @@ namespace {
 facet::EdgeImage edge_image(const std::string& stem) {
   facet::EdgeImage edges;
   edges.frame.stem = stem;
-  edges.score = (cv::Mat_<float>(1, 4) << 0.0f, 0.5f, 1.0f, std::numeric_limits<float>::quiet_NaN());
+  edges.score =
+      (cv::Mat_<float>(1, 4) << 0.0f, 0.5f, 1.0f, std::numeric_limits<float>::quiet_NaN());
   edges.mask = (cv::Mat_<std::uint8_t>(1, 4) << 255, 255, 0, 255);
   return edges;
 }

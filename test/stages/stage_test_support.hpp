@@ -3,8 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include "temp_dir.hpp"
-
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -18,6 +16,7 @@
 #include <string_view>
 
 #include "facet/error.hpp"
+#include "temp_dir.hpp"
 
 namespace facet::test {
 

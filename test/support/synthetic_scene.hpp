@@ -17,12 +17,14 @@
 
 namespace facet::test {
 
-inline CameraIntrinsics kinect_camera() { return {525.0, 525.0, 319.5, 239.5, 640, 480}; }
+inline CameraIntrinsics kinect_camera() {
+  return {525.0, 525.0, 319.5, 239.5, 640, 480};
+}
 
 struct RenderedScene {
-  cv::Mat depth_m;   // CV_32FC1, 0 where nothing was hit
-  cv::Mat object;    // CV_32SC1, primitive id (1-based in order of addition), 0 = nothing
-  cv::Mat face;      // CV_32SC1, globally unique face id, 0 = nothing
+  cv::Mat depth_m;  // CV_32FC1, 0 where nothing was hit
+  cv::Mat object;   // CV_32SC1, primitive id (1-based in order of addition), 0 = nothing
+  cv::Mat face;     // CV_32SC1, globally unique face id, 0 = nothing
   CameraIntrinsics camera;
 
   // Depth as a sensor delivers it: uint16 millimetres, 0 = invalid.
@@ -77,7 +79,8 @@ class SceneBuilder {
     out.face = cv::Mat::zeros(camera_.height, camera_.width, CV_32SC1);
     for (int v = 0; v < camera_.height; ++v) {
       for (int u = 0; u < camera_.width; ++u) {
-        const Eigen::Vector3d ray((u - camera_.cx) / camera_.fx, (v - camera_.cy) / camera_.fy, 1.0);
+        const Eigen::Vector3d ray((u - camera_.cx) / camera_.fx, (v - camera_.cy) / camera_.fy,
+                                  1.0);
         double best_t = std::numeric_limits<double>::infinity();
         int best_object = 0;
         int best_face = 0;

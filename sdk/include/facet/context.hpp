@@ -55,7 +55,9 @@ class ProcessContext {
 
   // --- reporting ---
   // A named number for this frame ("valid_ratio", "segments"); aggregated by run and compare.
-  void metric(std::string_view name, double value) { metrics_.push_back({std::string(name), value}); }
+  void metric(std::string_view name, double value) {
+    metrics_.push_back({std::string(name), value});
+  }
   // A message for the user; the executor prints it with node id and frame.
   void warn(std::string message) { warnings_.push_back(std::move(message)); }
 

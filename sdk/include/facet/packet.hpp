@@ -17,10 +17,10 @@ namespace facet {
 template <class T>
 struct TypeKey;
 
-#define FACET_TYPE_KEY(Type, key_literal)                   \
-  template <>                                               \
-  struct facet::TypeKey<Type> {                             \
-    static constexpr std::string_view value = key_literal;  \
+#define FACET_TYPE_KEY(Type, key_literal)                  \
+  template <>                                              \
+  struct facet::TypeKey<Type> {                            \
+    static constexpr std::string_view value = key_literal; \
   }
 
 template <class T>

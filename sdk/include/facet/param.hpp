@@ -23,12 +23,12 @@ std::string format_param_value(const ParamValue& value);
 // Optional attributes of a parameter, written with designated initialisers:
 //   spec.param("size", 3, "Window side length.", {.unit = "px", .choices = {3, 5}});
 struct ParamOptions {
-  std::string unit = {};             // "mm", "m", "deg", "px", ... empty for unitless
+  std::string unit = {};                 // "mm", "m", "deg", "px", ... empty for unitless
   std::optional<double> min = {};        // inclusive, integer and real parameters
   std::optional<double> max = {};        // inclusive
-  std::vector<ParamValue> choices = {}; // when not empty, the only accepted values
-  std::string origin = {};           // where the default comes from: "paper", "measured: ..."
-  bool required = false;             // a graph must set it (the default is only an example)
+  std::vector<ParamValue> choices = {};  // when not empty, the only accepted values
+  std::string origin = {};               // where the default comes from: "paper", "measured: ..."
+  bool required = false;                 // a graph must set it (the default is only an example)
 };
 
 struct ParamSpec {

@@ -53,22 +53,22 @@ class StageList final : public Registrar {
 #define FACET_PLUGIN_EXPORT __attribute__((visibility("default")))
 #endif
 
-#define FACET_PLUGIN(plugin_name_literal, plugin_version_literal)                             \
-  static void facet_plugin_register_(::facet::Registrar& registrar);                         \
-  extern "C" FACET_PLUGIN_EXPORT const facet_plugin_header* facet_plugin_entry(void) {       \
-    static const facet_plugin_header header = {                                              \
-        FACET_PLUGIN_MAGIC,                                                                  \
-        FACET_PLUGIN_ABI_VERSION,                                                            \
-        static_cast<uint32_t>(sizeof(facet_plugin_header)),                                 \
-        FACET_SDK_VERSION_MAJOR,                                                             \
-        FACET_SDK_VERSION_MINOR,                                                             \
-        FACET_SDK_VERSION_PATCH,                                                             \
-        FACET_TOOLCHAIN_FINGERPRINT,                                                         \
-        plugin_name_literal,                                                                 \
-        plugin_version_literal,                                                              \
-        [](void* registrar) {                                                                \
-          facet_plugin_register_(*static_cast<::facet::Registrar*>(registrar));              \
-        }};                                                                                  \
-    return &header;                                                                          \
-  }                                                                                          \
+#define FACET_PLUGIN(plugin_name_literal, plugin_version_literal)                      \
+  static void facet_plugin_register_(::facet::Registrar& registrar);                   \
+  extern "C" FACET_PLUGIN_EXPORT const facet_plugin_header* facet_plugin_entry(void) { \
+    static const facet_plugin_header header = {                                        \
+        FACET_PLUGIN_MAGIC,                                                            \
+        FACET_PLUGIN_ABI_VERSION,                                                      \
+        static_cast<uint32_t>(sizeof(facet_plugin_header)),                            \
+        FACET_SDK_VERSION_MAJOR,                                                       \
+        FACET_SDK_VERSION_MINOR,                                                       \
+        FACET_SDK_VERSION_PATCH,                                                       \
+        FACET_TOOLCHAIN_FINGERPRINT,                                                   \
+        plugin_name_literal,                                                           \
+        plugin_version_literal,                                                        \
+        [](void* registrar) {                                                          \
+          facet_plugin_register_(*static_cast<::facet::Registrar*>(registrar));        \
+        }};                                                                            \
+    return &header;                                                                    \
+  }                                                                                    \
   static void facet_plugin_register_(::facet::Registrar& registrar)

@@ -59,8 +59,7 @@ class StageSpec {
   StageSpec& param(std::string name, int default_value, std::string doc, ParamOptions opt = {});
   StageSpec& param(std::string name, std::int64_t default_value, std::string doc,
                    ParamOptions opt = {});
-  StageSpec& param(std::string name, double default_value, std::string doc,
-                   ParamOptions opt = {});
+  StageSpec& param(std::string name, double default_value, std::string doc, ParamOptions opt = {});
   StageSpec& param(std::string name, const char* default_value, std::string doc,
                    ParamOptions opt = {});
   StageSpec& param(std::string name, std::string default_value, std::string doc,
@@ -97,8 +96,8 @@ class StageSpec {
   }
 
  private:
-  StageSpec& add_param(std::string name, ParamType type, ParamValue default_value,
-                       std::string doc, ParamOptions opt);
+  StageSpec& add_param(std::string name, ParamType type, ParamValue default_value, std::string doc,
+                       ParamOptions opt);
 
   std::string name_;
   std::string doc_;

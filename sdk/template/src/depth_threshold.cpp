@@ -17,7 +17,8 @@ facet::StageSpec DepthThreshold::spec() {
       .concurrency(facet::Concurrency::reentrant);
 }
 
-DepthThreshold::DepthThreshold(const facet::Params& params) : max_mm_(params.get_double("max_mm")) {}
+DepthThreshold::DepthThreshold(const facet::Params& params)
+    : max_mm_(params.get_double("max_mm")) {}
 
 void DepthThreshold::process(facet::ProcessContext& ctx) {
   const auto& input = ctx.input<facet::DepthImage>("depth");

@@ -39,7 +39,8 @@ void counter_emits_frames_then_ends() {
 void threshold_drops_far_pixels_and_reports_ratio() {
   facet::DepthImage depth;
   depth.depth = (cv::Mat_<std::uint16_t>(1, 4) << 0, 800, 1200, 1600);
-  facet::testing::StageRunner<facet_template::DepthThreshold> runner({{"max_mm", std::int64_t{1000}}});
+  facet::testing::StageRunner<facet_template::DepthThreshold> runner(
+      {{"max_mm", std::int64_t{1000}}});
   runner.set_input("depth", facet::Packet::make(depth));
   runner.run();
   const auto& out = runner.output<facet::DepthImage>("depth").depth;

@@ -33,8 +33,8 @@ struct NodeStats {
 
 struct RunStats {
   std::int64_t frames = 0;
-  std::vector<NodeStats> nodes;   // in execution order
-  std::vector<double> frame_ms;   // wall time of each frame through the whole graph
+  std::vector<NodeStats> nodes;  // in execution order
+  std::vector<double> frame_ms;  // wall time of each frame through the whole graph
 };
 
 struct FrameEvent {

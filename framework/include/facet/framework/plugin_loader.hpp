@@ -6,7 +6,8 @@
 //   1. --plugin-path DIR (repeatable)
 //   2. $FACET_PLUGIN_PATH (colon-separated)
 //   3. `plugins: {paths: [...]}` in the graph file, relative to the graph file
-//   4. the build tree / install prefix next to the running executable: <exe dir>/../lib/facet/plugins
+//   4. the build tree / install prefix next to the running executable: <exe
+//   dir>/../lib/facet/plugins
 //   5. the install prefix the CLI was configured with: <prefix>/lib/facet/plugins
 
 #include <filesystem>
@@ -19,7 +20,8 @@ namespace facet {
 
 struct SearchDir {
   std::filesystem::path dir;
-  std::string origin;  // "--plugin-path", "FACET_PLUGIN_PATH", "graph file", "executable", "install prefix"
+  std::string
+      origin;  // "--plugin-path", "FACET_PLUGIN_PATH", "graph file", "executable", "install prefix"
 };
 
 // The search directories in order, for `facet doctor` and for loading. `environment_value` is the

@@ -7,6 +7,8 @@ namespace facet {
 
 // The p-th percentile (0..100) with linear interpolation between closest ranks; 0 when empty.
 double percentile(std::vector<double> samples, double p);
-inline double median(std::vector<double> samples) { return percentile(std::move(samples), 50.0); }
+inline double median(std::vector<double> samples) {
+  return percentile(std::move(samples), 50.0);
+}
 
 }  // namespace facet

@@ -69,9 +69,8 @@ class StageRunner : public StageRunnerBase {
  private:
   static StageSpec with_factory() {
     StageSpec spec = StageT::spec();
-    spec.factory([](const Params& p) -> std::unique_ptr<Stage> {
-      return std::make_unique<StageT>(p);
-    });
+    spec.factory(
+        [](const Params& p) -> std::unique_ptr<Stage> { return std::make_unique<StageT>(p); });
     return spec;
   }
 };

@@ -56,8 +56,8 @@ struct ObjectModel {
   std::int32_t id = 0;  // the id its pixels carry in the object label image
   std::int64_t pixel_count = 0;
   Eigen::Vector3d centroid_m = Eigen::Vector3d::Zero();
-  Eigen::AlignedBox3d bounds_m;  // axis-aligned, camera frame
-  OrientedBox box;               // oriented, from PCA of the points
+  Eigen::AlignedBox3d bounds_m;    // axis-aligned, camera frame
+  OrientedBox box;                 // oriented, from PCA of the points
   std::int32_t support_plane = 0;  // Plane::id it stands on, 0 = none
   Superquadric superquadric;
   GraspPrototype grasp = GraspPrototype::none;

@@ -3,7 +3,6 @@
 // Packets are immutable: a stage that changes an image makes a new one.
 
 #include <cstdint>
-
 #include <opencv2/core/mat.hpp>
 
 #include "facet/packet.hpp"
