@@ -5,6 +5,7 @@
 
 #include "blobs/blob_support.hpp"
 #include "blobs/euclidean_regions.hpp"
+#include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
 
@@ -64,11 +65,9 @@ GrowBlobs::GrowBlobs(const Params& params)
 void GrowBlobs::process(ProcessContext& ctx) {
   const auto& patches = ctx.input<LabelImage>("patches");
   const auto& points = ctx.input<PointImage>("points");
-  if (patches.labels.type() != CV_32SC1) throw StageError("input patches must be CV_32SC1");
-  if (points.points.type() != CV_32FC3) throw StageError("input points must be CV_32FC3");
-  if (points.points.size() != patches.labels.size()) {
-    throw StageError("patches and points differ in size");
-  }
+  require_type(patches.labels, CV_32SC1, "patches");
+  require_type(points.points, CV_32FC3, "points");
+  require_same_size(patches.labels, "patches", points.points, "points");
   const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
 
   // Taking part: a patch pixel with a finite point.

@@ -3,6 +3,7 @@
 #include <opencv2/core.hpp>
 #include <utility>
 
+#include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
 #include "grow/patch_contacts.hpp"
@@ -74,10 +75,8 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   if (edges.mask.empty() || edges.mask.type() != CV_8UC1) {
     throw StageError("input edges.mask must be a non-empty CV_8UC1 image");
   }
-  if (points.points.type() != CV_32FC3) throw StageError("input points must be CV_32FC3");
-  if (points.points.size() != edges.mask.size()) {
-    throw StageError("edges and points differ in size");
-  }
+  require_type(points.points, CV_32FC3, "points");
+  require_same_size(edges.mask, "edges", points.points, "points");
   // The assignment reads images as flat arrays.
   const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
 

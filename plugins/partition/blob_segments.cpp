@@ -4,16 +4,16 @@
 #include <cmath>
 
 #include "facet/error.hpp"
+#include "facet/image_checks.hpp"
 
 namespace facet::partition {
 
 void check_partition_inputs(const cv::Mat& blobs, const cv::Mat& patches, const cv::Mat& points) {
-  if (blobs.type() != CV_32SC1) throw StageError("input blobs must be CV_32SC1");
-  if (patches.type() != CV_32SC1) throw StageError("input patches must be CV_32SC1");
-  if (points.type() != CV_32FC3) throw StageError("input points must be CV_32FC3");
-  if (blobs.size() != patches.size() || blobs.size() != points.size()) {
-    throw StageError("inputs blobs, patches and points differ in size");
-  }
+  require_type(blobs, CV_32SC1, "blobs");
+  require_type(patches, CV_32SC1, "patches");
+  require_type(points, CV_32FC3, "points");
+  require_same_size(blobs, "blobs", patches, "patches");
+  require_same_size(blobs, "blobs", points, "points");
 }
 
 void BlobSegments::build(const cv::Mat& blob_labels, const cv::Mat& patch_labels,

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
 #include "planes/world_up.hpp"
@@ -197,11 +198,9 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
 void SupportPlaneStage::process(ProcessContext& ctx) {
   const auto& patches = ctx.input<LabelImage>("patches");
   const auto& points = ctx.input<PointImage>("points");
-  if (patches.labels.type() != CV_32SC1) throw StageError("input patches must be CV_32SC1");
-  if (points.points.type() != CV_32FC3) throw StageError("input points must be CV_32FC3");
-  if (points.points.size() != patches.labels.size()) {
-    throw StageError("patches and points differ in size");
-  }
+  require_type(patches.labels, CV_32SC1, "patches");
+  require_type(points.points, CV_32FC3, "points");
+  require_same_size(patches.labels, "patches", points.points, "points");
   const cv::Mat labels = patches.labels.isContinuous() ? patches.labels : patches.labels.clone();
   const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
 

@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "facet/error.hpp"
+#include "facet/image_checks.hpp"
 
 namespace facet::shape {
 
 std::vector<ObjectPoints> gather_object_points(const cv::Mat& labels, const cv::Mat& points) {
-  if (labels.type() != CV_32SC1) throw StageError("input objects.labels must be CV_32SC1");
-  if (points.type() != CV_32FC3) throw StageError("input points must be CV_32FC3");
-  if (labels.size() != points.size()) throw StageError("objects and points differ in size");
+  require_type(labels, CV_32SC1, "objects");
+  require_type(points, CV_32FC3, "points");
+  require_same_size(labels, "objects", points, "points");
 
   // Ids are dense (1..N) in practice, so a table indexed by id is cheaper than a map.
   std::vector<ObjectPoints> by_id;

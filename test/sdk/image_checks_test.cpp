@@ -1,0 +1,38 @@
+#include "facet/image_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <opencv2/core.hpp>
+
+#include "facet/error.hpp"
+
+namespace {
+
+std::string message_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const facet::StageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ImageChecks, TypeMismatchNamesPortAndBothTypes) {
+  const cv::Mat depth(2, 3, CV_16UC1);
+  EXPECT_NO_THROW(facet::require_type(depth, CV_16UC1, "depth"));
+  EXPECT_EQ(message_of([&] { facet::require_type(depth, CV_32FC3, "points"); }),
+            "input 'points' must be CV_32FC3, got CV_16UC1");
+  EXPECT_EQ(message_of([&] { facet::require_type(cv::Mat(), CV_32SC1, "patches"); }),
+            "input 'patches' must be CV_32SC1, got an empty image");
+}
+
+TEST(ImageChecks, SizeMismatchNamesBothPortsAndSizes) {
+  const cv::Mat a(480, 640, CV_32SC1);
+  const cv::Mat b(240, 320, CV_32FC3);
+  EXPECT_NO_THROW(facet::require_same_size(a, "patches", a, "labels"));
+  EXPECT_EQ(message_of([&] { facet::require_same_size(a, "patches", b, "points"); }),
+            "inputs 'patches' (640x480) and 'points' (320x240) differ in size");
+}
+
+}  // namespace
