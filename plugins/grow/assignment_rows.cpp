@@ -37,6 +37,7 @@ namespace {
 // Eight lanes, one per pixel of a word; GCC lowers them to one AVX2 register or two SSE ones.
 using Floats = float __attribute__((vector_size(32)));
 using Ints = std::int32_t __attribute__((vector_size(32)));
+using Bytes = std::int8_t __attribute__((vector_size(8)));
 
 // Unaligned load. (Through a reference: a vector returned by value draws an ABI warning in the
 // default clone.)
@@ -47,14 +48,19 @@ void load(Vector& to, const T* from) {
 
 }  // namespace
 
-__attribute__((target_clones("avx2", "default"))) void choose_nearest_neighbours(
-    const NeighbourRows& rows, const std::uint8_t* __restrict candidate, std::uint8_t round,
-    float gate_sq_m2, std::int32_t* __restrict choice, int width) {
+__attribute__((target_clones("avx2", "default"))) int assign_nearest_neighbours(
+    const NeighbourRows& rows, const std::uint8_t* candidate, std::uint8_t round, float gate_sq_m2,
+    std::int32_t* label_row, std::uint8_t* state_row, std::int32_t* wide_state_row, int width) {
   const Ints round_lanes = Ints{} + round;
+  const std::uint64_t round_bytes = 0x0101010101010101ULL * round;
+  int assigned = 0;
   for (int x0 = 0; x0 < width; x0 += 8) {
     std::uint64_t word = 0;
     std::memcpy(&word, candidate + x0, sizeof(word));
     if (word == 0) continue;
+    Bytes candidate_bytes;
+    std::memcpy(&candidate_bytes, &word, sizeof(word));
+    const Ints is_candidate = __builtin_convertvector(candidate_bytes, Ints);
     Floats px;
     Floats py;
     Floats pz;
@@ -62,7 +68,8 @@ __attribute__((target_clones("avx2", "default"))) void choose_nearest_neighbours
     load(py, rows.coordinates[1][1] + x0);
     load(pz, rows.coordinates[1][2] + x0);
     Floats best_sq = Floats{} + gate_sq_m2;
-    Ints best = Ints{};
+    Ints found = Ints{};
+    Ints best_label = Ints{};
     for (int n = 0; n < 8; ++n) {
       const int row = kNeighbourSteps[n][1] + 1;
       const int x = x0 + kNeighbourSteps[n][0];
@@ -70,10 +77,12 @@ __attribute__((target_clones("avx2", "default"))) void choose_nearest_neighbours
       Floats qy;
       Floats qz;
       Ints state;
+      Ints label;
       load(qx, rows.coordinates[row][0] + x);
       load(qy, rows.coordinates[row][1] + x);
       load(qz, rows.coordinates[row][2] + x);
       load(state, rows.state[row] + x);
+      load(label, rows.labels[row] + x);
       const Floats ex = qx - px;
       const Floats ey = qy - py;
       const Floats ez = qz - pz;
@@ -81,10 +90,39 @@ __attribute__((target_clones("avx2", "default"))) void choose_nearest_neighbours
       const Ints labelled = state < round_lanes;
       const Ints closer = labelled & (distance_sq < best_sq);  // false for NaN
       best_sq = closer ? distance_sq : best_sq;
-      best = closer ? Ints{} + (n + 1) : best;
+      found |= closer;
+      best_label = closer ? label : best_label;
     }
-    std::memcpy(choice + x0, &best, sizeof(best));
+    const Ints take = found & (is_candidate != 0);
+    const Bytes take_bytes = __builtin_convertvector(take, Bytes);  // 0 or -1 per lane
+    std::uint64_t take_mask = 0;
+    std::memcpy(&take_mask, &take_bytes, sizeof(take_mask));
+    if (take_mask == 0) continue;
+    assigned += __builtin_popcountll(take_mask) / 8;
+    if (x0 + 8 <= width) {
+      Ints labels;
+      Ints wide_state;
+      std::uint64_t state_bytes = 0;
+      load(labels, label_row + x0);
+      load(wide_state, wide_state_row + x0);
+      std::memcpy(&state_bytes, state_row + x0, sizeof(state_bytes));
+      labels = take ? best_label : labels;
+      wide_state = take ? round_lanes : wide_state;
+      state_bytes = (state_bytes & ~take_mask) | (round_bytes & take_mask);
+      std::memcpy(label_row + x0, &labels, sizeof(labels));
+      std::memcpy(wide_state_row + x0, &wide_state, sizeof(wide_state));
+      std::memcpy(state_row + x0, &state_bytes, sizeof(state_bytes));
+    } else {
+      // The row's last, partial word: a whole-vector store would reach into the next row.
+      for (int x = x0; x < width; ++x) {
+        if (take[x - x0] == 0) continue;
+        label_row[x] = best_label[x - x0];
+        state_row[x] = round;
+        wide_state_row[x] = round;
+      }
+    }
   }
+  return assigned;
 }
 
 }  // namespace facet::grow

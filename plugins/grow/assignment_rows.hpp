@@ -29,16 +29,20 @@ void find_round_candidates(const std::uint8_t* up, const std::uint8_t* mid,
 struct NeighbourRows {
   const float* coordinates[3][3];  // [row][x, y, z] planes of the points, metres
   const std::int32_t* state[3];    // the state bytes, widened
+  const std::int32_t* labels[3];   // the label image (any value where the state is invalid)
 };
 
-// For every 8-pixel word of `candidate` (bytes 0/1, readable up to a multiple of 8) holding a
-// candidate: choice[x] = 1 + n for the neighbour n (raster order, see kNeighbourSteps) whose
-// label pixel x takes in `round`, 0 if none. The neighbour is the 3D-closest of those labelled
-// before `round` (state below it) and closer than the gate; the first of equals wins, NaN never.
+// One round on the row `mid`: every candidate pixel (`candidate` bytes 0/1, readable up to a
+// multiple of 8, 0 past `width`) takes the label of the neighbour that is 3D-closest among those
+// labelled before `round` (state below it) and closer than the gate; the first of equals in
+// kNeighbourSteps order wins, NaN never. A pixel that takes a label gets `round` in `state_row`
+// (bytes) and in the widened state of `rows.state[1]`; `label_row` is `rows.labels[1]`.
 // Vectorised across the 8 pixels of a word: each lane runs the sequential strict-< scan of its
-// own 8 neighbours, so the choice is exactly that of the scan.
-void choose_nearest_neighbours(const NeighbourRows& rows, const std::uint8_t* candidate,
-                               std::uint8_t round, float gate_sq_m2, std::int32_t* choice,
-                               int width);
+// own 8 neighbours, so the choice is exactly that of the scan. A pixel labelled in this round
+// has state `round`, so no other pixel of the round takes its label. Returns the number of
+// pixels labelled.
+int assign_nearest_neighbours(const NeighbourRows& rows, const std::uint8_t* candidate,
+                              std::uint8_t round, float gate_sq_m2, std::int32_t* label_row,
+                              std::uint8_t* state_row, std::int32_t* wide_state_row, int width);
 
 }  // namespace facet::grow

@@ -42,13 +42,8 @@ AssignmentResult EdgeAssignment::assign(cv::Mat& labels, const cv::Mat& classes,
   const auto guarded_rows = static_cast<std::size_t>(height_ + 2);
   assigned_px_.assign(static_cast<std::size_t>(rounds + 1) * guarded_rows, 0);
   std::fill_n(assigned_px_.begin() + 1, height_, 1);
-  // Row buffers, with room for the kernels' last 8-pixel word (zero: no candidate there).
+  // Row buffer, with room for the kernels' last 8-pixel word (zero: no candidate there).
   candidates_.assign(static_cast<std::size_t>(width_) + 8, 0);
-  choices_.assign(static_cast<std::size_t>(width_) + 8, 0);
-  for (int n = 0; n < 8; ++n) {
-    neighbour_offsets_[n] =
-        static_cast<std::ptrdiff_t>(kNeighbourSteps[n][1]) * width_ + kNeighbourSteps[n][0];
-  }
   // Round r on row y reads the points of rows y - 1..y + 1, so the wavefront works on rows
   // step - rounds..step + 1.
   const float* point_data = points.ptr<float>();
@@ -112,27 +107,12 @@ int EdgeAssignment::run_round_on_row(std::int32_t* labels, int row, std::uint8_t
     for (int c = 0; c < 3; ++c)
       rows.coordinates[r][c] = point_rows_.coordinates(row + r - 1, c);
     rows.state[r] = point_rows_.state(row + r - 1);
+    // Rows -1 and height are the guard rows of the label buffer (kLabelGuardPx).
+    rows.labels[r] = labels + static_cast<std::ptrdiff_t>(row + r - 1) * width_;
   }
-  std::int32_t* choice = choices_.data();
-  std::int32_t* wide_state = point_rows_.state(row);
-  choose_nearest_neighbours(rows, candidate, round, gate_sq_m2_, choice, width_);
-
   std::int32_t* label_row = labels + static_cast<std::ptrdiff_t>(row) * width_;
-  int assigned = 0;
-  for (int x0 = 0; x0 < width_; x0 += 8) {
-    std::uint64_t word = 0;
-    std::memcpy(&word, candidate + x0, sizeof(word));
-    while (word != 0) {
-      const int x = x0 + __builtin_ctzll(word) / 8;
-      word &= word - 1;
-      if (choice[x] == 0) continue;
-      label_row[x] = label_row[x + neighbour_offsets_[choice[x] - 1]];
-      state[x] = round;
-      wide_state[x] = round;
-      ++assigned;
-    }
-  }
-  return assigned;
+  return assign_nearest_neighbours(rows, candidate, round, gate_sq_m2_, label_row, state,
+                                   point_rows_.state(row), width_);
 }
 
 }  // namespace facet::grow

@@ -32,8 +32,10 @@ class EdgeAssignment {
  public:
   explicit EdgeAssignment(const AssignmentRule& rule);
 
-  // labels: CV_32SC1 patch ids, 0 = unassigned; updated in place. classes: CV_8UC1 PixelClass
-  // (only valid pixels are assigned). points: CV_32FC3 in metres. labels and points continuous.
+  // labels: CV_32SC1 patch ids, 0 = unassigned; updated in place; readable for a row and
+  // kLabelGuardPx pixels before and after the image, as SurfaceRegionLabeler makes it. classes:
+  // CV_8UC1 PixelClass (only valid pixels are assigned). points: CV_32FC3 in metres. labels and
+  // points continuous.
   AssignmentResult assign(cv::Mat& labels, const cv::Mat& classes, const cv::Mat& points);
 
  private:
@@ -50,10 +52,8 @@ class EdgeAssignment {
   // Per pixel, with a one-pixel guard frame of kInvalidState: the round in which the pixel got
   // its label (0 = a patch from region growing), or kUnassignedState / kInvalidState.
   std::vector<std::uint8_t> state_;
-  std::vector<std::uint8_t> candidates_;      // of one row in one round, as bytes 0/1
-  std::vector<std::int32_t> choices_;         // of one row in one round: 1 + neighbour index, or 0
-  std::ptrdiff_t neighbour_offsets_[8] = {};  // kNeighbourSteps as offsets in the label image
-  PointRowRing point_rows_;                   // the rows the wavefront is working on
+  std::vector<std::uint8_t> candidates_;  // of one row in one round, as bytes 0/1
+  PointRowRing point_rows_;               // the rows the wavefront is working on
   // assigned_px_[r * (height + 2) + row + 1]: pixels of a row labelled in round r (a guard row
   // above and below); round 0 marks every row as holding patch pixels.
   std::vector<int> assigned_px_;

@@ -83,7 +83,7 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   // Surface = not an edge and a valid 3D point, so a patch never holds a pixel without a point,
   // whatever produced the edge mask.
   const cv::Mat classes = classify_pixels(edges.mask, xyz);
-  SurfaceRegions regions = label_surface_regions(classes, connectivity_, min_size_px_);
+  SurfaceRegions regions = regions_.label(classes, connectivity_, min_size_px_);
   const AssignmentResult assigned = assignment_.assign(regions.labels, classes, xyz);
 
   PatchAdjacency adjacency = find_patch_contacts(regions.labels, regions.count);

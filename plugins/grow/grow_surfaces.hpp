@@ -6,6 +6,7 @@
 
 #include "facet/stage.hpp"
 #include "grow/edge_assignment.hpp"
+#include "grow/surface_regions.hpp"
 
 namespace facet::grow {
 
@@ -18,7 +19,9 @@ class GrowSurfaces final : public Stage {
  private:
   int connectivity_;
   std::int64_t min_size_px_;
-  EdgeAssignment assignment_;  // keeps its buffers from frame to frame
+  // Both keep their buffers from frame to frame.
+  SurfaceRegionLabeler regions_;
+  EdgeAssignment assignment_;
 };
 
 }  // namespace facet::grow

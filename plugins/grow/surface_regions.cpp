@@ -3,19 +3,13 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
-#include <vector>
 
 #include "grow/pixel_classes.hpp"
 
 namespace facet::grow {
 namespace {
-
-struct Run {
-  int row;
-  int begin;  // first column
-  int end;    // one past the last column
-};
 
 // One bit per pixel of a row, set for surface pixels (bit x % 64 of word x / 64).
 void surface_bits(const unsigned char* classes, int width, std::vector<std::uint64_t>& bits) {
@@ -46,115 +40,122 @@ int next_column(const std::vector<std::uint64_t>& bits, int from, bool value, in
   return width;
 }
 
+}  // namespace
+
 // Runs of surface pixels found with bit scans: a row of 640 pixels is 10 words.
-std::vector<Run> find_runs(const cv::Mat& classes, std::vector<std::size_t>& row_first) {
-  std::vector<Run> runs;
-  std::vector<std::uint64_t> bits;
-  row_first.assign(static_cast<std::size_t>(classes.rows) + 1, 0);
+void SurfaceRegionLabeler::find_runs(const cv::Mat& classes) {
+  runs_.clear();
+  row_first_.assign(static_cast<std::size_t>(classes.rows) + 1, 0);
   const int width = classes.cols;
   for (int row = 0; row < classes.rows; ++row) {
-    row_first[static_cast<std::size_t>(row)] = runs.size();
-    surface_bits(classes.ptr<unsigned char>(row), width, bits);
-    int x = next_column(bits, 0, true, width);
+    row_first_[static_cast<std::size_t>(row)] = runs_.size();
+    surface_bits(classes.ptr<unsigned char>(row), width, bits_);
+    int x = next_column(bits_, 0, true, width);
     while (x < width) {
-      const int end = next_column(bits, x, false, width);
-      runs.push_back({row, x, end});
-      x = next_column(bits, end, true, width);
+      const int end = next_column(bits_, x, false, width);
+      runs_.push_back({x, end});
+      x = next_column(bits_, end, true, width);
     }
   }
-  row_first.back() = runs.size();
-  return runs;
+  row_first_.back() = runs_.size();
 }
 
-// Union-find over run indices. The root of a set is always its smallest index, i.e. the set's
-// first run in raster order, which gives raster-ordered region ids for free.
-class RunSets {
- public:
-  explicit RunSets(std::size_t count) : parent_(count) {
-    for (std::size_t i = 0; i < count; ++i)
-      parent_[i] = i;
+std::uint32_t SurfaceRegionLabeler::find_root(std::uint32_t run) {
+  while (parent_[run] != run) {
+    parent_[run] = parent_[parent_[run]];  // path halving
+    run = parent_[run];
   }
-  std::size_t find(std::size_t i) {
-    while (parent_[i] != i) {
-      parent_[i] = parent_[parent_[i]];  // path halving
-      i = parent_[i];
-    }
-    return i;
-  }
-  // Points every run straight at its root in one forward pass: a parent always has a smaller
-  // index, so it already points at the root when its children are visited.
-  void flatten() {
-    for (std::size_t i = 0; i < parent_.size(); ++i)
-      parent_[i] = parent_[parent_[i]];
-  }
-  // After flatten().
-  std::size_t root(std::size_t i) const { return parent_[i]; }
-  void join(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a < b) {
-      parent_[b] = a;
-    } else if (b < a) {
-      parent_[a] = b;
-    }
-  }
+  return run;
+}
 
- private:
-  std::vector<std::size_t> parent_;
-};
+void SurfaceRegionLabeler::join(std::uint32_t a, std::uint32_t b) {
+  a = find_root(a);
+  b = find_root(b);
+  if (a < b) {
+    parent_[b] = a;
+  } else if (b < a) {
+    parent_[a] = b;
+  }
+}
 
 // Joins each run with the runs of the previous row it touches. With 8-connectivity, runs that
 // only meet diagonally (one ends where the other begins, one column apart) touch too.
-void join_touching_runs(const std::vector<Run>& runs, const std::vector<std::size_t>& row_first,
-                        int connectivity, RunSets& sets) {
+void SurfaceRegionLabeler::join_touching_runs(int connectivity) {
   const int slack = connectivity == 8 ? 1 : 0;
-  for (std::size_t row = 1; row + 1 < row_first.size(); ++row) {
-    std::size_t above = row_first[row - 1];
-    const std::size_t above_end = row_first[row];
-    for (std::size_t i = row_first[row]; i < row_first[row + 1]; ++i) {
-      const Run& run = runs[i];
-      while (above < above_end && runs[above].end + slack <= run.begin)
+  for (std::size_t row = 1; row + 1 < row_first_.size(); ++row) {
+    std::size_t above = row_first_[row - 1];
+    const std::size_t above_end = row_first_[row];
+    for (std::size_t i = row_first_[row]; i < row_first_[row + 1]; ++i) {
+      const Run run = runs_[i];
+      while (above < above_end && runs_[above].end + slack <= run.begin)
         ++above;
-      for (std::size_t j = above; j < above_end && runs[j].begin < run.end + slack; ++j) {
-        sets.join(i, j);
+      for (std::size_t j = above; j < above_end && runs_[j].begin < run.end + slack; ++j) {
+        join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
       }
     }
   }
 }
 
-}  // namespace
+// Writes every pixel once, row by row: the gaps between runs as 0, each run as its region's id
+// (0 for a region under the minimum size), so the image needs no separate clearing pass.
+void SurfaceRegionLabeler::write_labels(cv::Mat& labels) const {
+  for (int row = 0; row < labels.rows; ++row) {
+    std::int32_t* out = labels.ptr<std::int32_t>(row);
+    int column = 0;
+    for (std::size_t i = row_first_[static_cast<std::size_t>(row)];
+         i < row_first_[static_cast<std::size_t>(row) + 1]; ++i) {
+      const Run run = runs_[i];
+      std::fill(out + column, out + run.begin, 0);
+      std::fill(out + run.begin, out + run.end, id_[parent_[i]]);
+      column = run.end;
+    }
+    std::fill(out + column, out + labels.cols, 0);
+  }
+}
 
-SurfaceRegions label_surface_regions(const cv::Mat& classes, int connectivity,
-                                     std::int64_t min_size_px) {
+SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, int connectivity,
+                                           std::int64_t min_size_px) {
   if (classes.type() != CV_8UC1) throw std::invalid_argument("pixel classes must be CV_8UC1");
   if (connectivity != 4 && connectivity != 8) {
     throw std::invalid_argument("connectivity must be 4 or 8");
   }
-  std::vector<std::size_t> row_first;
-  const std::vector<Run> runs = find_runs(classes, row_first);
-  RunSets sets(runs.size());
-  join_touching_runs(runs, row_first, connectivity, sets);
-  sets.flatten();
+  find_runs(classes);
+  if (runs_.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("image too large for region labelling");
+  }
+  const std::size_t run_count = runs_.size();
+  parent_.resize(run_count);
+  for (std::size_t i = 0; i < run_count; ++i)
+    parent_[i] = static_cast<std::uint32_t>(i);
+  join_touching_runs(connectivity);
+  // Points every run straight at its root in one forward pass: a parent always has a smaller
+  // index, so it already points at the root when its children are visited.
+  for (std::size_t i = 0; i < run_count; ++i)
+    parent_[i] = parent_[parent_[i]];
 
-  std::vector<std::int64_t> size_px(runs.size(), 0);
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    size_px[sets.root(i)] += runs[i].end - runs[i].begin;
+  size_px_.assign(run_count, 0);
+  for (std::size_t i = 0; i < run_count; ++i)
+    size_px_[parent_[i]] += runs_[i].end - runs_[i].begin;
 
   // Roots come in raster order of their first pixel; number the large enough ones.
   SurfaceRegions result;
-  std::vector<std::int32_t> id(runs.size(), 0);
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (sets.root(i) == i && size_px[i] >= min_size_px) id[i] = ++result.count;
+  id_.assign(run_count, 0);
+  for (std::size_t i = 0; i < run_count; ++i) {
+    if (parent_[i] == i && size_px_[i] >= min_size_px) {
+      id_[i] = ++result.count;
+      result.labelled_px += size_px_[i];
+    }
   }
-  result.labels = cv::Mat::zeros(classes.size(), CV_32SC1);
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const std::int32_t label = id[sets.root(i)];
-    if (label == 0) continue;
-    const Run run = runs[i];  // a copy: stores to the labels cannot alias it
-    std::fill(result.labels.ptr<std::int32_t>(run.row) + run.begin,
-              result.labels.ptr<std::int32_t>(run.row) + run.end, label);
-    result.labelled_px += run.end - run.begin;
-  }
+  // The image lives inside a buffer with zero guard rows above and below (a whole row and
+  // kLabelGuardPx more pixels, even in narrow images), so that the assignment pass can load the
+  // labels around any pixel as whole vectors. A full-width row range is still a continuous image.
+  const int width = classes.cols;
+  const int guard_rows = 1 + (kLabelGuardPx + width - 1) / std::max(width, 1);
+  cv::Mat buffer(classes.rows + 2 * guard_rows, width, CV_32SC1);
+  buffer.rowRange(0, guard_rows).setTo(0);
+  buffer.rowRange(guard_rows + classes.rows, buffer.rows).setTo(0);
+  result.labels = buffer.rowRange(guard_rows, guard_rows + classes.rows);
+  write_labels(result.labels);
   return result;
 }
 
