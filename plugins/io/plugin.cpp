@@ -6,6 +6,7 @@
 #include "io/frames_source.hpp"
 #include "io/labels_sink.hpp"
 #include "io/objects_sink.hpp"
+#include "io/overlay_sink.hpp"
 
 FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::FramesSource>();
@@ -13,4 +14,5 @@ FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::DepthSink>();
   registrar.add<facet::io::EdgesSink>();
   registrar.add<facet::io::ObjectsSink>();
+  registrar.add<facet::io::OverlaySink>();
 }
