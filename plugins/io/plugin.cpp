@@ -1,6 +1,7 @@
 // The io plugin: stages that read recorded frames from disk and write results back.
 #include "facet/plugin.hpp"
 
+#include "io/cloud_sink.hpp"
 #include "io/depth_sink.hpp"
 #include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"
@@ -15,4 +16,5 @@ FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::EdgesSink>();
   registrar.add<facet::io::ObjectsSink>();
   registrar.add<facet::io::OverlaySink>();
+  registrar.add<facet::io::CloudSink>();
 }

@@ -1,4 +1,5 @@
-// io.overlay: the picture of a segmented frame, and the palette it takes its colours from.
+// io.overlay and io.cloud: the picture and the point cloud of a segmented frame, and the palette
+// both take their colours from.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "facet/framework/registry.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
+#include "io/cloud_sink.hpp"
 #include "io/label_palette.hpp"
 #include "io/overlay_sink.hpp"
 #include "stage_test_support.hpp"
@@ -271,14 +273,254 @@ TEST(OverlaySink, BadInputsAndParamsAreClearErrors) {
       {"far_m", "near_m"});
 }
 
+// ---------------------------------------------------------------------------------------------
+// io.cloud
+
+// A PLY file as read back by a small independent reader: header fields and vertex rows.
+struct PlyVertex {
+  float x = 0, y = 0, z = 0;
+  Rgb colour;
+  std::uint32_t label = 0;
+};
+
+struct PlyFile {
+  std::string format;
+  std::int64_t declared_vertices = -1;
+  std::vector<std::string> properties;  // "float x", ...
+  std::vector<PlyVertex> vertices;
+  bool trailing_bytes = false;
+};
+
+template <class T>
+T read_le(const std::string& bytes, std::size_t& at) {
+  std::uint32_t value = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i)
+    value |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes.at(at + i))) << (8 * i);
+  at += sizeof(T);
+  if constexpr (std::is_same_v<T, float>) {
+    return std::bit_cast<float>(value);
+  } else {
+    return static_cast<T>(value);
+  }
+}
+
+PlyFile read_ply(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string bytes = buffer.str();
+  PlyFile ply;
+  const std::string end = "end_header\n";
+  const auto header_end = bytes.find(end);
+  EXPECT_NE(header_end, std::string::npos) << file;
+  if (header_end == std::string::npos) return ply;
+  std::istringstream header(bytes.substr(0, header_end));
+  std::string line;
+  std::getline(header, line);
+  EXPECT_EQ(line, "ply");
+  while (std::getline(header, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format") {
+      words >> ply.format;
+    } else if (keyword == "element") {
+      std::string name;
+      words >> name >> ply.declared_vertices;
+      EXPECT_EQ(name, "vertex");
+    } else if (keyword == "property") {
+      ply.properties.push_back(line.substr(9));
+    }
+  }
+  std::size_t at = header_end + end.size();
+  if (ply.format == "binary_little_endian") {
+    for (std::int64_t i = 0; i < ply.declared_vertices && at + 19 <= bytes.size(); ++i) {
+      PlyVertex v;
+      v.x = read_le<float>(bytes, at);
+      v.y = read_le<float>(bytes, at);
+      v.z = read_le<float>(bytes, at);
+      v.colour.r = read_le<std::uint8_t>(bytes, at);
+      v.colour.g = read_le<std::uint8_t>(bytes, at);
+      v.colour.b = read_le<std::uint8_t>(bytes, at);
+      v.label = read_le<std::uint32_t>(bytes, at);
+      ply.vertices.push_back(v);
+    }
+    ply.trailing_bytes = at != bytes.size();
+  } else {
+    std::istringstream body(bytes.substr(at));
+    PlyVertex v;
+    unsigned r = 0, g = 0, b = 0;
+    while (body >> v.x >> v.y >> v.z >> r >> g >> b >> v.label) {
+      v.colour = Rgb{static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g),
+                     static_cast<std::uint8_t>(b)};
+      ply.vertices.push_back(v);
+    }
+    ply.trailing_bytes = !body.eof();
+  }
+  return ply;
+}
+
+// 4x3 points with three NaN points (one with only z NaN); labels 0, 2 and 5.
+struct CloudScene {
+  PointImage points;
+  LabelImage labels;
+};
+
+CloudScene cloud_scene(const std::string& stem) {
+  CloudScene scene;
+  scene.points.frame.stem = stem;
+  scene.points.points = cv::Mat(3, 4, CV_32FC3);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      scene.points.points.at<cv::Vec3f>(y, x) =
+          cv::Vec3f(0.001F * static_cast<float>(x) - 0.25F, -0.1F / 3.0F * static_cast<float>(y),
+                    0.8F + 0.0123F * static_cast<float>(x + 4 * y));
+    }
+  }
+  scene.points.points.at<cv::Vec3f>(0, 1) = cv::Vec3f(kNaN, kNaN, kNaN);
+  scene.points.points.at<cv::Vec3f>(1, 2) = cv::Vec3f(kNaN, kNaN, kNaN);
+  scene.points.points.at<cv::Vec3f>(2, 0)[2] = kNaN;
+  scene.labels.frame.stem = stem;
+  scene.labels.labels = (cv::Mat_<std::int32_t>(3, 4) << 0, 2, 2, 0,  //
+                         5, 5, 2, 0,                                  //
+                         5, 5, 5, 2);
+  scene.labels.count = 5;
+  return scene;
+}
+
+// The vertices io.cloud should write for `scene`, in row-major order.
+std::vector<PlyVertex> expected_vertices(const CloudScene& scene, bool labelled_only) {
+  std::vector<PlyVertex> expected;
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const cv::Vec3f p = scene.points.points.at<cv::Vec3f>(y, x);
+      const auto label = static_cast<std::uint32_t>(scene.labels.labels.at<std::int32_t>(y, x));
+      if (std::isnan(p[0]) || std::isnan(p[1]) || std::isnan(p[2])) continue;
+      if (labelled_only && label == 0) continue;
+      const Rgb colour = label == 0 ? Rgb{170, 170, 170} : label_colour(label);
+      expected.push_back({p[0], p[1], p[2], colour, label});
+    }
+  }
+  return expected;
+}
+
+void expect_same_vertices(const std::vector<PlyVertex>& actual,
+                          const std::vector<PlyVertex>& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < actual.size(); ++i) {
+    SCOPED_TRACE("vertex " + std::to_string(i));
+    // Both encodings are exact: binary by construction, ascii by shortest round-trip text.
+    EXPECT_EQ(actual[i].x, expected[i].x);
+    EXPECT_EQ(actual[i].y, expected[i].y);
+    EXPECT_EQ(actual[i].z, expected[i].z);
+    EXPECT_EQ(actual[i].colour, expected[i].colour);
+    EXPECT_EQ(actual[i].label, expected[i].label);
+  }
+}
+
+using CloudRunner = facet::testing::StageRunner<facet::io::CloudSink>;
+
+TEST(CloudSink, BinaryPlyHasTheValidPointsWithLabelsAndColours) {
+  TempDir dir;
+  CloudRunner sink({{"dir", (dir / "cloud").string()}});
+  const CloudScene scene = cloud_scene("learn5");
+  sink.set_input("points", Packet::make(scene.points));
+  sink.set_input("labels", Packet::make(scene.labels));
+  sink.run();
+  const PlyFile ply = read_ply(dir / "cloud/learn5.ply");
+  EXPECT_EQ(ply.format, "binary_little_endian");
+  EXPECT_EQ(ply.declared_vertices, 9);  // 12 pixels, 3 of them NaN
+  const std::vector<std::string> properties{"float x",     "float y",    "float z",   "uchar red",
+                                            "uchar green", "uchar blue", "uint label"};
+  EXPECT_EQ(ply.properties, properties);
+  EXPECT_FALSE(ply.trailing_bytes);
+  expect_same_vertices(ply.vertices, expected_vertices(scene, false));
+  ASSERT_EQ(sink.metrics().size(), 1U);
+  EXPECT_EQ(sink.metrics()[0].name, "points");
+  EXPECT_EQ(sink.metrics()[0].value, 9.0);
+}
+
+TEST(CloudSink, AsciiPlyReadsBackTheSame) {
+  TempDir dir;
+  CloudRunner sink({{"dir", dir.path().string()}, {"format", std::string("ascii")}});
+  const CloudScene scene = cloud_scene("t");
+  sink.set_input("points", Packet::make(scene.points));
+  sink.set_input("labels", Packet::make(scene.labels));
+  sink.run();
+  const PlyFile ply = read_ply(dir / "t.ply");
+  EXPECT_EQ(ply.format, "ascii");
+  EXPECT_EQ(ply.declared_vertices, 9);
+  EXPECT_FALSE(ply.trailing_bytes);
+  expect_same_vertices(ply.vertices, expected_vertices(scene, false));
+}
+
+TEST(CloudSink, LabelledOnlyAndUnconnectedLabels) {
+  TempDir dir;
+  const CloudScene scene = cloud_scene("s");
+  {
+    CloudRunner sink({{"dir", (dir / "labelled").string()}, {"labelled_only", true}});
+    sink.set_input("points", Packet::make(scene.points));
+    sink.set_input("labels", Packet::make(scene.labels));
+    sink.run();
+    const PlyFile ply = read_ply(dir / "labelled/s.ply");
+    EXPECT_EQ(ply.declared_vertices, 6);
+    expect_same_vertices(ply.vertices, expected_vertices(scene, true));
+  }
+  {
+    CloudRunner sink({{"dir", (dir / "plain").string()}});
+    sink.set_input("points", Packet::make(scene.points));
+    sink.run();
+    const PlyFile ply = read_ply(dir / "plain/s.ply");
+    EXPECT_EQ(ply.declared_vertices, 9);
+    for (const PlyVertex& v : ply.vertices) {
+      EXPECT_EQ(v.label, 0U);
+      EXPECT_EQ(v.colour, (Rgb{170, 170, 170}));
+    }
+  }
+}
+
+TEST(CloudSink, NoValidPointGivesAnEmptyButWellFormedFile) {
+  TempDir dir;
+  CloudRunner sink({{"dir", dir.path().string()}});
+  PointImage points = with_frame(PointImage{}, "none");
+  points.points = cv::Mat(2, 2, CV_32FC3, cv::Scalar(kNaN, kNaN, kNaN));
+  sink.set_input("points", Packet::make(points));
+  sink.run();
+  const PlyFile ply = read_ply(dir / "none.ply");
+  EXPECT_EQ(ply.declared_vertices, 0);
+  EXPECT_TRUE(ply.vertices.empty());
+  EXPECT_FALSE(ply.trailing_bytes);
+}
+
+TEST(CloudSink, NegativeLabelsAndWrongTypesAreErrorsNamingTheFile) {
+  TempDir dir;
+  CloudRunner sink({{"dir", dir.path().string()}});
+  CloudScene scene = cloud_scene("neg");
+  scene.labels.labels.at<std::int32_t>(1, 1) = -4;
+  sink.set_input("points", Packet::make(scene.points));
+  sink.set_input("labels", Packet::make(scene.labels));
+  expect_stage_error([&] { sink.run(); }, {"neg.ply", "negative label -4"});
+
+  PointImage depth_like = with_frame(PointImage{}, "flat");
+  depth_like.points = cv::Mat(3, 4, CV_32FC1, cv::Scalar(1.0));
+  sink.set_input("points", Packet::make(depth_like));
+  expect_stage_error([&] { sink.run(); }, {"flat.ply", "CV_32FC3"});
+}
+
 TEST(OverlayAndCloudSinks, AFileThatCannotBeWrittenIsAnErrorNamingIt) {
   TempDir dir;
   std::filesystem::create_directories(dir / "x.png");  // a folder where the file should go
+  std::filesystem::create_directories(dir / "x.ply");
   OverlayRunner overlay({{"dir", dir.path().string()}});
   const OverlayScene scene = overlay_scene("x");
   overlay.set_input("depth", Packet::make(scene.depth));
   overlay.set_input("labels", Packet::make(scene.labels));
   expect_stage_error([&] { overlay.run(); }, {"cannot write", (dir / "x.png").string()});
+
+  CloudRunner cloud({{"dir", dir.path().string()}});
+  cloud.set_input("points", Packet::make(cloud_scene("x").points));
+  expect_stage_error([&] { cloud.run(); },
+                     {"cannot open", (dir / "x.ply").string(), "Is a directory"});
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -313,13 +555,17 @@ TEST(OverlayAndCloudSinks, UnwritableFolderNamesNodeAndFolder) {
   write_text(dir / "occupied", "a file, not a folder");
   const auto folder = dir / "occupied/overlay";
   const std::string overlay = open_error_of_a_run<facet::io::OverlaySink>(folder, "overlay_out");
+  const std::string cloud = open_error_of_a_run<facet::io::CloudSink>(folder, "cloud_out");
   EXPECT_NE(overlay.find("node 'overlay_out' (io.overlay)"), std::string::npos) << overlay;
+  EXPECT_NE(cloud.find("node 'cloud_out' (io.cloud)"), std::string::npos) << cloud;
   const std::string folder_named = "cannot create output folder '" + folder.string() + "'";
   EXPECT_NE(overlay.find(folder_named), std::string::npos) << overlay;
+  EXPECT_NE(cloud.find(folder_named), std::string::npos) << cloud;
 }
 
 TEST(OverlayAndCloudSinks, SpecsDocumentEveryPortAndParameter) {
-  for (const facet::StageSpec& spec : {facet::io::OverlaySink::spec()}) {
+  for (const facet::StageSpec& spec :
+       {facet::io::OverlaySink::spec(), facet::io::CloudSink::spec()}) {
     SCOPED_TRACE(spec.name());
     EXPECT_TRUE(spec.outputs().empty());
     EXPECT_EQ(spec.concurrency(), facet::Concurrency::serial);
@@ -331,6 +577,7 @@ TEST(OverlayAndCloudSinks, SpecsDocumentEveryPortAndParameter) {
   }
   EXPECT_FALSE(facet::io::OverlaySink::spec().find_input("edges")->required);
   EXPECT_TRUE(facet::io::OverlaySink::spec().find_input("labels")->required);
+  EXPECT_FALSE(facet::io::CloudSink::spec().find_input("labels")->required);
 }
 
 }  // namespace
