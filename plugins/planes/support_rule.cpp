@@ -18,6 +18,10 @@ SampleBits classify_samples(const cv::Mat& points, const std::vector<PlaneModel>
                             const SupportRule& rule) {
   SampleBits bits;
   const int stride = std::max(1, rule.sample_stride_px);
+  const auto samples = static_cast<std::size_t>((points.rows + stride - 1) / stride) *
+                       static_cast<std::size_t>((points.cols + stride - 1) / stride);
+  bits.on.reserve(samples);
+  bits.behind.reserve(samples);
   for (int row = 0; row < points.rows; row += stride) {
     const auto* xyz = points.ptr<float>(row);
     for (int col = 0; col < points.cols; col += stride) {
