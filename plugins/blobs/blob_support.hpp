@@ -1,7 +1,8 @@
 #pragma once
 // Keeping only blobs that stand on or in front of the support planes: a blob mostly behind a
 // table, floor or wall plane is background seen beyond it (the floor past a table's edge, a
-// room behind a doorway), not a graspable object.
+// room behind a doorway), and a blob lying mostly within a plane's band is a shred of that
+// plane (a strip of table between an object's silhouette and an edge), not a graspable object.
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
@@ -11,11 +12,22 @@
 
 namespace facet::blobs {
 
-// Removes (sets to 0) blobs with more than max_behind_fraction of their points further than
-// margin_m behind any plane, then renumbers the rest 1..count keeping their order. Returns how
-// many were removed.
-std::int32_t drop_blobs_behind_planes(EuclideanRegions& blobs, const cv::Mat& xyz,
-                                      const SupportPlanes& planes, double max_behind_fraction,
-                                      float margin_m);
+struct BackgroundBlobRule {
+  bool drop_behind = true;           // apply the behind test
+  double max_behind_fraction = 0.5;  // share of points further than behind_margin_m behind
+  float behind_margin_m = 0.03F;
+  double max_on_plane_fraction = 0.5;  // share of points within on_plane_distance_m; > 1 = off
+  float on_plane_distance_m = 0.012F;
+};
+
+struct DroppedBlobs {
+  std::int32_t behind = 0;    // blobs mostly behind a plane
+  std::int32_t on_plane = 0;  // blobs mostly within a plane's band
+};
+
+// Removes (sets to 0) the blobs that one of the rule's tests finds to be background, then
+// renumbers the rest 1..count keeping their order.
+DroppedBlobs drop_background_blobs(EuclideanRegions& blobs, const cv::Mat& xyz,
+                                   const SupportPlanes& planes, const BackgroundBlobRule& rule);
 
 }  // namespace facet::blobs

@@ -18,15 +18,18 @@ StageSpec GrowBlobs::spec() {
              "Paper sec. II-B e. Pixels of a non-zero patch with a valid point are linked to "
              "their 8 neighbours when the two points are closer than max_distance_m in 3D "
              "(single linkage); blobs under min_size_px are removed. With the optional planes "
-             "input and front_only set, blobs with more than max_behind_fraction of their "
-             "points over behind_margin_m behind a support plane are removed too (background "
-             "seen beyond a table or through a wall opening). Ids 1..N follow the raster order "
+             "input, blobs with more than max_behind_fraction of their points over "
+             "behind_margin_m behind a support plane (background seen beyond a table or "
+             "through a wall opening; when front_only is set) or more than "
+             "max_on_plane_fraction within on_plane_distance_m of one (a shred of the plane) "
+             "are removed too. Ids 1..N follow the raster order "
              "of each blob's first pixel.")
       .input<LabelImage>("patches",
                          "Patches left for objects (planes.support `patches`); 0 = not an "
                          "object candidate.")
       .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .optional_input<SupportPlanes>("planes", "Support planes, for front_only.")
+      .optional_input<SupportPlanes>("planes",
+                                     "Support planes, for front_only and max_on_plane_fraction.")
       .output<LabelImage>("blobs", "CV_32SC1 blob ids 1..count, 0 = no blob.")
       .param("max_distance_m", 0.01,
              "Delta_blob: neighbouring pixels join one blob when their points are closer.",
@@ -52,15 +55,29 @@ StageSpec GrowBlobs::spec() {
               .min = 0.0,
               .max = 1.0,
               .origin = "planes.support behind_margin_m (measured: 2.5 delta)"})
+      .param("max_on_plane_fraction", 0.5,
+             "With the planes input: a blob with more than this share of its points within "
+             "on_plane_distance_m of a support plane is a shred of that plane (a strip of table "
+             "cut off by an object's silhouette) and is removed. Above 1: never.",
+             {.min = 0.0,
+              .max = 2.0,
+              .origin = "majority; needed since planes.support leaves object faces their "
+                        "points near the table"})
+      .param("on_plane_distance_m", 0.012,
+             "max_on_plane_fraction: how close to a plane a point counts as on it.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "planes.support distance_m (delta)"})
       .concurrency(Concurrency::clonable);
 }
 
 GrowBlobs::GrowBlobs(const Params& params)
     : max_distance_m_(static_cast<float>(params.get_double("max_distance_m"))),
-      min_size_px_(params.get_int("min_size_px")),
-      require_front_(params.get_bool("front_only")),
-      max_behind_fraction_(params.get_double("max_behind_fraction")),
-      behind_margin_m_(static_cast<float>(params.get_double("behind_margin_m"))) {}
+      min_size_px_(params.get_int("min_size_px")) {
+  rule_.drop_behind = params.get_bool("front_only");
+  rule_.max_behind_fraction = params.get_double("max_behind_fraction");
+  rule_.behind_margin_m = static_cast<float>(params.get_double("behind_margin_m"));
+  rule_.max_on_plane_fraction = params.get_double("max_on_plane_fraction");
+  rule_.on_plane_distance_m = static_cast<float>(params.get_double("on_plane_distance_m"));
+}
 
 void GrowBlobs::process(ProcessContext& ctx) {
   const auto& patches = ctx.input<LabelImage>("patches");
@@ -84,10 +101,9 @@ void GrowBlobs::process(ProcessContext& ctx) {
     }
   }
   EuclideanRegions regions = grow_euclidean_regions(mask, xyz, max_distance_m_, min_size_px_);
-  std::int32_t behind = 0;
-  if (require_front_ && ctx.has_input("planes")) {
-    behind = drop_blobs_behind_planes(regions, xyz, ctx.input<SupportPlanes>("planes"),
-                                      max_behind_fraction_, behind_margin_m_);
+  DroppedBlobs dropped;
+  if (ctx.has_input("planes")) {
+    dropped = drop_background_blobs(regions, xyz, ctx.input<SupportPlanes>("planes"), rule_);
   }
 
   LabelImage blobs;
@@ -95,7 +111,8 @@ void GrowBlobs::process(ProcessContext& ctx) {
   blobs.labels = std::move(regions.labels);
   blobs.count = regions.count;
   ctx.metric("blobs", blobs.count);
-  ctx.metric("blobs_behind_planes", behind);
+  ctx.metric("blobs_behind_planes", dropped.behind);
+  ctx.metric("blobs_on_planes", dropped.on_plane);
   ctx.output("blobs", std::move(blobs));
 }
 

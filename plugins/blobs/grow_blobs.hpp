@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "blobs/blob_support.hpp"
 #include "facet/stage.hpp"
 
 namespace facet::blobs {
@@ -17,9 +18,7 @@ class GrowBlobs final : public Stage {
  private:
   float max_distance_m_;
   std::int64_t min_size_px_;
-  bool require_front_;
-  double max_behind_fraction_;
-  float behind_margin_m_;
+  BackgroundBlobRule rule_;
 };
 
 }  // namespace facet::blobs

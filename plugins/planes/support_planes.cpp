@@ -136,6 +136,15 @@ StageSpec SupportPlaneStage::spec() {
               .max = 1.0e8,
               .origin = "measured: same planes and scores on mOSD as with all points, a "
                         "fraction of the time"})
+      .param("object_face_off_plane_fraction", 0.5,
+             "A patch with at least this share of its points more than 2 distance_m from every "
+             "support plane is an object face: its points within distance_m of a plane stay "
+             "with it (the bottom band of an object standing on the table). Other points within "
+             "distance_m join the plane. Above 1, every point within distance_m joins, as in the "
+             "paper.",
+             {.min = 0.0,
+              .max = 2.0,
+              .origin = "measured on mOSD: recall of objects' lower borders (docs/planes.md)"})
       .param("min_view_fraction", 0.01,
              "A plane that is not the dominant horizontal one must hold at least this share of "
              "the valid pixels (sampled, within distance_m) to be background.",
@@ -201,6 +210,7 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
     : candidate_min_px_(params.get_int("candidate_min_px")),
       max_candidates_(static_cast<int>(params.get_int("max_candidates"))),
       max_fit_points_(params.get_int("fit_max_points")),
+      object_face_off_plane_fraction_(params.get_double("object_face_off_plane_fraction")),
       horizontal_max_deg_(params.get_double("horizontal_max_deg")),
       up_prior_max_deg_(params.get_double("up_prior_max_deg")),
       min_segment_px_(params.get_int("min_segment_px")),
@@ -254,16 +264,15 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const std::vector<CandidateEvidence> evidence =
       decide_support(xyz, models, dominant, support_rule_);
 
-  // Assignment, largest plane first: every valid point not yet taken within delta. One pass
-  // over the image: a point joins the first accepted plane (in candidate order) within delta,
-  // which is what taking the planes one after the other would give.
+  // Assignment, largest plane first: a valid point within delta of a support plane joins the
+  // first such plane in candidate order (what taking the planes one after the other would
+  // give), unless it belongs to an object face, a patch that lies mostly well off the planes:
+  // the bottom band of a box side, within delta of the table it stands on, stays with the box.
   std::vector<PlaneModel> accepted;
   for (std::size_t c = 0; c < models.size(); ++c) {
     if (evidence[c].accepted) accepted.push_back(models[c]);
   }
   const float delta_m = support_rule_.inlier_distance_m;
-  std::vector<std::int64_t> inliers(accepted.size(), 0);
-  std::vector<double> squared_sum(accepted.size(), 0.0);
 
   SupportPlanes planes;
   static_cast<FrameHeader&>(planes) = points;
@@ -282,34 +291,61 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const auto* label = labels.ptr<std::int32_t>();
   const auto* point = xyz.ptr<float>();
   const std::size_t total = labels.total();
-  std::vector<std::int64_t> left_px(static_cast<std::size_t>(std::max(0, patches.count)) + 1, 0);
+  const auto patch_slots = static_cast<std::size_t>(std::max(0, patches.count)) + 1;
+  // Slot 0 collects pixels of no patch (or of an id outside 1..count).
+  const auto patch_slot = [&](std::int32_t id) {
+    return id > 0 && id <= patches.count ? static_cast<std::size_t>(id) : std::size_t{0};
+  };
+  // Per patch: valid points, and those clearly off the planes (beyond 2 delta from all).
+  std::vector<std::int64_t> patch_px(patch_slots, 0);
+  std::vector<std::int64_t> off_px(patch_slots, 0);
   std::int64_t valid_px = 0;
-  std::int64_t plane_px = 0;
   for (std::size_t i = 0; i < total; ++i) {
     const float* p = point + 3 * i;
-    std::int32_t on_plane = 0;
+    std::int32_t near = 0;
+    const std::size_t slot = patch_slot(label[i]);
     if (std::isfinite(p[2])) {
       ++valid_px;
+      bool off = true;
       for (std::size_t c = 0; c < accepted.size(); ++c) {
-        const float d = accepted[c].signed_distance_m(p);
-        if (std::abs(d) > delta_m) continue;
-        on_plane = static_cast<std::int32_t>(c + 1);
-        ++inliers[c];
-        squared_sum[c] += static_cast<double>(d) * d;
-        break;
+        const float distance = std::abs(accepted[c].signed_distance_m(p));
+        off = off && distance > 2.0F * delta_m;
+        if (distance <= delta_m) {
+          near = static_cast<std::int32_t>(c + 1);
+          break;
+        }
       }
+      ++patch_px[slot];
+      off_px[slot] += off ? 1 : 0;
     }
-    plane_of[i] = on_plane;
-    const std::int32_t id = label[i];
-    if (on_plane != 0) {
+    plane_of[i] = near;
+  }
+  // Patches whose points within delta join the planes: all but object faces.
+  std::vector<char> plane_patch(patch_slots, 1);
+  for (std::size_t slot = 1; slot < patch_slots; ++slot) {
+    plane_patch[slot] = static_cast<double>(off_px[slot]) <
+                        object_face_off_plane_fraction_ * static_cast<double>(patch_px[slot]);
+  }
+
+  std::vector<std::int64_t> inliers(accepted.size(), 0);
+  std::vector<double> squared_sum(accepted.size(), 0.0);
+  std::vector<std::int64_t> left_px(patch_slots, 0);
+  std::int64_t plane_px = 0;
+  for (std::size_t i = 0; i < total; ++i) {
+    const std::size_t slot = patch_slot(label[i]);
+    const std::int32_t near = plane_of[i];
+    if (near != 0 && plane_patch[slot] != 0) {
+      const auto plane = static_cast<std::size_t>(near - 1);
+      const float d = accepted[plane].signed_distance_m(point + 3 * i);
+      ++inliers[plane];
+      squared_sum[plane] += static_cast<double>(d) * d;
       left[i] = 0;
       ++plane_px;
-    } else if (id > 0 && id <= patches.count) {
-      left[i] = id;
-      ++left_px[id];
-    } else {
-      left[i] = 0;  // ids outside 1..count are not patches
+      continue;
     }
+    plane_of[i] = 0;
+    left[i] = static_cast<std::int32_t>(slot);
+    ++left_px[slot];
   }
   const bool small_segments = std::any_of(left_px.begin() + 1, left_px.end(), [&](std::int64_t n) {
     return n > 0 && n < min_segment_px_;

@@ -24,6 +24,7 @@ class SupportPlaneStage final : public Stage {
   std::int64_t candidate_min_px_;
   int max_candidates_;
   std::int64_t max_fit_points_;
+  double object_face_off_plane_fraction_;
   double horizontal_max_deg_;
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto

@@ -58,6 +58,48 @@ TEST(GrowBlobs, OneBlobPerBox) {
   EXPECT_EQ(first, 1);
 }
 
+// The bottom band of a box side, within delta of the table, stays with the box's face patch:
+// every box pixel is left for objects. Taken literally (the paper's rule), the plane takes it.
+TEST(SupportPlanes, ObjectFacesKeepTheirPointsNearTheTable) {
+  const SceneRun kept = run_scene(table_with_boxes());
+  const SceneRun paper = run_scene(table_with_boxes(), {{"object_face_off_plane_fraction", 2.0}});
+  std::int64_t lost_kept = 0;
+  std::int64_t lost_paper = 0;
+  for (int box = 2; box <= 4; ++box) {
+    lost_kept += count_where(kept.scene.object, box, kept.planes.plane_labels.labels, 1);
+    lost_paper += count_where(paper.scene.object, box, paper.planes.plane_labels.labels, 1);
+    EXPECT_EQ(count_where(kept.scene.object, box, kept.planes.patches.labels, 0), 0)
+        << "box " << box;
+  }
+  EXPECT_EQ(lost_kept, 0);
+  EXPECT_GT(lost_paper, 100);
+  // The table itself is taken whole either way.
+  EXPECT_EQ(count_where(kept.scene.object, 1, kept.planes.patches.labels, 0),
+            pixels_of(kept.scene.object, 1));
+}
+
+// A blob lying within the table's band (a strip of table cut off from its patch) is a shred
+// of the plane, not an object; a box of the same footprint standing on the table is kept.
+TEST(GrowBlobs, BlobsLyingInAPlaneBandAreRemoved) {
+  const SceneRun run = run_scene(table_with_boxes());
+  // Hand the table's pixels of one image region back to the blob stage as a patch of its own.
+  LabelImage patches = run.planes.patches;
+  int shred_px = 0;
+  for (int v = 300; v < 320; ++v) {
+    for (int u = 40; u < 120; ++u) {
+      if (run.scene.object.at<int>(v, u) != 1) continue;
+      patches.labels.at<int>(v, u) = 1000;
+      ++shred_px;
+    }
+  }
+  ASSERT_GT(shred_px, 1000);
+  const LabelImage kept = run_blobs(patches, run.points, &run.planes.planes);
+  EXPECT_EQ(kept.count, 3);
+  const LabelImage all =
+      run_blobs(patches, run.points, &run.planes.planes, {{"max_on_plane_fraction", 2.0}});
+  EXPECT_EQ(all.count, 4);
+}
+
 TEST(SupportPlanes, GivenUpGivesTheSameTable) {
   const SceneBuilder builder = table_with_boxes();
   const RenderedScene scene = builder.render();
