@@ -29,12 +29,12 @@ struct Candidate {
 std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& xyz,
                                           std::int32_t count, std::int64_t min_px,
                                           int max_candidates, std::int64_t max_points) {
-  std::vector<std::int64_t> size_px(static_cast<std::size_t>(count) + 1, 0);
   const auto* label = labels.ptr<std::int32_t>();
   const auto* point = xyz.ptr<float>();
   const std::size_t total = labels.total();
   // Sizes count patch pixels (those of grow.surfaces all have a valid point); only the sampled
   // points are checked below.
+  std::vector<std::int64_t> size_px(static_cast<std::size_t>(count) + 1, 0);
   for (std::size_t i = 0; i < total; ++i) {
     const std::int32_t id = label[i];
     if (id > 0 && id <= count) ++size_px[id];
@@ -296,9 +296,14 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const auto patch_slot = [&](std::int32_t id) {
     return id > 0 && id <= patches.count ? static_cast<std::size_t>(id) : std::size_t{0};
   };
-  // Per patch: valid points, and those clearly off the planes (beyond 2 delta from all).
+  // Per patch: valid points, those clearly off the planes (beyond 2 delta from all), and per
+  // (patch, plane) the points within delta and their squared distances, so that the plane
+  // statistics need no second look at the points once the patches are judged.
+  const std::size_t plane_count = accepted.size();
   std::vector<std::int64_t> patch_px(patch_slots, 0);
   std::vector<std::int64_t> off_px(patch_slots, 0);
+  std::vector<std::int64_t> near_px(patch_slots * plane_count, 0);
+  std::vector<double> near_squared_m2(patch_slots * plane_count, 0.0);
   std::int64_t valid_px = 0;
   for (std::size_t i = 0; i < total; ++i) {
     const float* p = point + 3 * i;
@@ -307,11 +312,14 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     if (std::isfinite(p[2])) {
       ++valid_px;
       bool off = true;
-      for (std::size_t c = 0; c < accepted.size(); ++c) {
-        const float distance = std::abs(accepted[c].signed_distance_m(p));
+      for (std::size_t c = 0; c < plane_count; ++c) {
+        const float d = accepted[c].signed_distance_m(p);
+        const float distance = std::abs(d);
         off = off && distance > 2.0F * delta_m;
         if (distance <= delta_m) {
           near = static_cast<std::int32_t>(c + 1);
+          ++near_px[slot * plane_count + c];
+          near_squared_m2[slot * plane_count + c] += static_cast<double>(d) * d;
           break;
         }
       }
@@ -326,19 +334,21 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     plane_patch[slot] = static_cast<double>(off_px[slot]) <
                         object_face_off_plane_fraction_ * static_cast<double>(patch_px[slot]);
   }
+  std::vector<std::int64_t> inliers(plane_count, 0);
+  std::vector<double> squared_sum(plane_count, 0.0);
+  for (std::size_t slot = 0; slot < patch_slots; ++slot) {
+    if (plane_patch[slot] == 0) continue;
+    for (std::size_t c = 0; c < plane_count; ++c) {
+      inliers[c] += near_px[slot * plane_count + c];
+      squared_sum[c] += near_squared_m2[slot * plane_count + c];
+    }
+  }
 
-  std::vector<std::int64_t> inliers(accepted.size(), 0);
-  std::vector<double> squared_sum(accepted.size(), 0.0);
   std::vector<std::int64_t> left_px(patch_slots, 0);
   std::int64_t plane_px = 0;
   for (std::size_t i = 0; i < total; ++i) {
     const std::size_t slot = patch_slot(label[i]);
-    const std::int32_t near = plane_of[i];
-    if (near != 0 && plane_patch[slot] != 0) {
-      const auto plane = static_cast<std::size_t>(near - 1);
-      const float d = accepted[plane].signed_distance_m(point + 3 * i);
-      ++inliers[plane];
-      squared_sum[plane] += static_cast<double>(d) * d;
+    if (plane_of[i] != 0 && plane_patch[slot] != 0) {
       left[i] = 0;
       ++plane_px;
       continue;
@@ -347,12 +357,17 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     left[i] = static_cast<std::int32_t>(slot);
     ++left_px[slot];
   }
-  const bool small_segments = std::any_of(left_px.begin() + 1, left_px.end(), [&](std::int64_t n) {
-    return n > 0 && n < min_segment_px_;
-  });
+  // Segments too small to matter; slot 0 (no patch) is never kept.
+  std::vector<char> too_small(patch_slots, 0);
+  bool small_segments = false;
+  for (std::size_t slot = 1; slot < patch_slots; ++slot) {
+    const std::int64_t size = left_px[slot];
+    too_small[slot] = size > 0 && size < min_segment_px_;
+    small_segments = small_segments || too_small[slot] != 0;
+  }
   if (small_segments) {
     for (std::size_t i = 0; i < total; ++i) {
-      if (left[i] != 0 && left_px[left[i]] < min_segment_px_) left[i] = 0;
+      if (too_small[static_cast<std::size_t>(left[i])] != 0) left[i] = 0;
     }
   }
 
