@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Scores the objects of graphs/tabletop.yaml and its variants against part-level ground truth
+# with an external scorer, overall and per category of the dataset's frames.csv (mean F over the
+# frames of each category), as a markdown table.
+#
+#   scripts/score_objects.sh DATASET SCORER [OUT] [VARIANT...]
+#     DATASET  a dataset folder with intrinsics.yaml, depth/, label_parts/ and frames.csv (mOSD)
+#     SCORER   path of the scoring script (score.py), run with the system python3
+#     OUT      where results go (default out/score_objects)
+#     VARIANT  variants to score besides the default graph (default: convex pca5)
+set -euo pipefail
+dataset="${1:?dataset folder}"
+scorer="${2:?path of score.py}"
+out="${3:-out/score_objects}"
+shift $(($# < 3 ? $# : 3))
+variants=("$@")
+[[ ${#variants[@]} -gt 0 ]] || variants=(convex pca5)
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+facet="$here/build/bin/facet"
+
+echo "| variant | P | R | **F** | seg [%] | over | under | merged | per category F |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for variant in default "${variants[@]}"; do
+  args=()
+  [[ "$variant" == default ]] || args=(--variant "$variant")
+  "$facet" run "$here/graphs/tabletop.yaml" -q "${args[@]}" \
+    --param input="$dataset" --param output="$out/$variant"
+  /usr/bin/python3 "$scorer" --gt "$dataset/label_parts" --gt-name '*.png' \
+    --pred "$out/$variant/labels" --pred-name '*.png' --per-image \
+    --json "$out/$variant/score.json" >/dev/null
+  /usr/bin/python3 - "$out/$variant/score.json" "$dataset/frames.csv" "$variant" <<'PY'
+import csv, json, os, sys
+from collections import defaultdict
+score, frames, variant = sys.argv[1:4]
+overlap = json.load(open(score))["overlap"]
+category = {row["frame"]: row["category"] for row in csv.DictReader(open(frames))}
+per_category = defaultdict(list)
+for image in overlap["images"]:
+    stem = os.path.splitext(os.path.basename(image["key"]))[0]
+    per_category[category.get(stem, "?")].append(image["f_measure"])
+o = overlap["overall"]
+cats = ", ".join(f"{c} ({len(v)}) {sum(v) / len(v):.3f}" for c, v in sorted(per_category.items()))
+print(f"| {variant} | {100 * o['precision']:.1f} | {100 * o['recall']:.1f} | "
+      f"**{o['f_measure']:.3f}** | {o['objects_segmented_pct']:.1f} | {o['over_segmented']} | "
+      f"{o['under_segmenting']} | {o['merged_objects']} | {cats} |")
+PY
+done
