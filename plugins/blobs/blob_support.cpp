@@ -38,8 +38,7 @@ DroppedBlobs drop_background_blobs(EuclideanRegions& blobs, const cv::Mat& xyz,
     }
     on_plane_px[id] += on_plane ? 1 : 0;
   }
-  std::vector<std::int32_t> new_id(count, 0);
-  std::int32_t kept = 0;
+  std::vector<char> keep(count, 0);
   for (std::size_t id = 1; id < count; ++id) {
     const auto size = static_cast<double>(size_px[id]);
     bool is_behind = false;
@@ -55,13 +54,26 @@ DroppedBlobs drop_background_blobs(EuclideanRegions& blobs, const cv::Mat& xyz,
     } else if (is_on_plane) {
       ++dropped.on_plane;
     } else {
-      new_id[id] = ++kept;
+      keep[id] = 1;
     }
   }
+  keep_blobs(blobs, keep);
+  return dropped;
+}
+
+std::int32_t keep_blobs(EuclideanRegions& blobs, const std::vector<char>& keep) {
+  std::vector<std::int32_t> new_id(keep.size(), 0);
+  std::int32_t kept = 0;
+  for (std::size_t id = 1; id < keep.size(); ++id) {
+    if (keep[id] != 0) new_id[id] = ++kept;
+  }
+  auto* label = blobs.labels.ptr<std::int32_t>();
+  const std::size_t total = blobs.labels.total();
   for (std::size_t i = 0; i < total; ++i)
     label[i] = new_id[static_cast<std::size_t>(label[i])];
+  const std::int32_t removed = blobs.count - kept;
   blobs.count = kept;
-  return dropped;
+  return removed;
 }
 
 }  // namespace facet::blobs

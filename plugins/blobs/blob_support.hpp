@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <vector>
 
 #include "blobs/euclidean_regions.hpp"
 #include "facet/types/geometry.hpp"
@@ -24,6 +25,10 @@ struct DroppedBlobs {
   std::int32_t behind = 0;    // blobs mostly behind a plane
   std::int32_t on_plane = 0;  // blobs mostly within a plane's band
 };
+
+// Keeps the blobs with keep[id] != 0 (keep has count + 1 entries), sets the others to 0 and
+// renumbers the kept ones 1..count in their order. Returns how many were removed.
+std::int32_t keep_blobs(EuclideanRegions& blobs, const std::vector<char>& keep);
 
 // Removes (sets to 0) the blobs that one of the rule's tests finds to be background, then
 // renumbers the rest 1..count keeping their order.

@@ -5,6 +5,7 @@
 
 #include "blobs/blob_support.hpp"
 #include "blobs/euclidean_regions.hpp"
+#include "blobs/workspace_box.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
@@ -22,7 +23,8 @@ StageSpec GrowBlobs::spec() {
              "behind_margin_m behind a support plane (background seen beyond a table or "
              "through a wall opening; when front_only is set) or more than "
              "max_on_plane_fraction within on_plane_distance_m of one (a shred of the plane) "
-             "are removed too. Ids 1..N follow the raster order "
+             "are removed too, and with a workspace box those whose centroid lies outside it. Ids "
+             "1..N follow the raster order "
              "of each blob's first pixel.")
       .input<LabelImage>("patches",
                          "Patches left for objects (planes.support `patches`); 0 = not an "
@@ -66,6 +68,13 @@ StageSpec GrowBlobs::spec() {
       .param("on_plane_distance_m", 0.012,
              "max_on_plane_fraction: how close to a plane a point counts as on it.",
              {.unit = "m", .min = 0.0, .max = 1.0, .origin = "planes.support distance_m (delta)"})
+      .param("workspace", "",
+             "Task space: blobs whose centroid lies outside this axis-aligned box are removed. "
+             "'xmin,xmax,ymin,ymax,zmin,zmax' in metres in the camera frame (x right, y down, "
+             "z forward), e.g. '-0.4,0.4,-0.5,0.3,0.5,1.2' for the reach of an arm; empty = "
+             "no box.",
+             {.origin = "none by default: the planes and the behind test handle uncropped "
+                        "views without it"})
       .concurrency(Concurrency::clonable);
 }
 
@@ -77,6 +86,11 @@ GrowBlobs::GrowBlobs(const Params& params)
   rule_.behind_margin_m = static_cast<float>(params.get_double("behind_margin_m"));
   rule_.max_on_plane_fraction = params.get_double("max_on_plane_fraction");
   rule_.on_plane_distance_m = static_cast<float>(params.get_double("on_plane_distance_m"));
+  try {
+    workspace_ = parse_workspace(params.get_string("workspace"));
+  } catch (const std::invalid_argument& error) {
+    throw StageError(error.what());
+  }
 }
 
 void GrowBlobs::process(ProcessContext& ctx) {
@@ -105,6 +119,7 @@ void GrowBlobs::process(ProcessContext& ctx) {
   if (ctx.has_input("planes")) {
     dropped = drop_background_blobs(regions, xyz, ctx.input<SupportPlanes>("planes"), rule_);
   }
+  const std::int32_t outside = workspace_ ? drop_blobs_outside(regions, xyz, *workspace_) : 0;
 
   LabelImage blobs;
   static_cast<FrameHeader&>(blobs) = points;
@@ -113,6 +128,7 @@ void GrowBlobs::process(ProcessContext& ctx) {
   ctx.metric("blobs", blobs.count);
   ctx.metric("blobs_behind_planes", dropped.behind);
   ctx.metric("blobs_on_planes", dropped.on_plane);
+  ctx.metric("blobs_outside_workspace", outside);
   ctx.output("blobs", std::move(blobs));
 }
 

@@ -2,7 +2,9 @@
 // grow.blobs: object candidates as Euclidean blobs of the points left after the support planes
 // (paper sec. II-B e).
 
+#include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 
 #include "blobs/blob_support.hpp"
 #include "facet/stage.hpp"
@@ -19,6 +21,7 @@ class GrowBlobs final : public Stage {
   float max_distance_m_;
   std::int64_t min_size_px_;
   BackgroundBlobRule rule_;
+  std::optional<Eigen::AlignedBox3f> workspace_;
 };
 
 }  // namespace facet::blobs

@@ -1,7 +1,10 @@
 // planes.support and grow.blobs on rendered scenes with perfect patches.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "planes_test_scene.hpp"
 
@@ -98,6 +101,45 @@ TEST(GrowBlobs, BlobsLyingInAPlaneBandAreRemoved) {
   const LabelImage all =
       run_blobs(patches, run.points, &run.planes.planes, {{"max_on_plane_fraction", 2.0}});
   EXPECT_EQ(all.count, 4);
+}
+
+// A workspace box around two of the three boxes keeps just those two; a malformed box is a
+// construction error that names the text.
+TEST(GrowBlobs, WorkspaceBoxKeepsTheObjectsInside) {
+  const SceneRun run = run_scene(table_with_boxes());
+  ASSERT_EQ(run.blobs.count, 3);
+  // Camera-frame x of each box's centroid, from the rendered points.
+  std::vector<double> x_m;
+  for (int box = 2; box <= 4; ++box) {
+    double sum = 0.0;
+    int n = 0;
+    for (int v = 0; v < run.scene.object.rows; ++v) {
+      for (int u = 0; u < run.scene.object.cols; ++u) {
+        if (run.scene.object.at<int>(v, u) != box) continue;
+        sum += run.points.points.at<cv::Vec3f>(v, u)[0];
+        ++n;
+      }
+    }
+    x_m.push_back(sum / n);
+  }
+  std::sort(x_m.begin(), x_m.end());
+  // From halfway between the first two boxes to well past the last one.
+  const std::string workspace =
+      std::to_string(0.5 * (x_m[0] + x_m[1])) + "," + std::to_string(x_m[2] + 1.0) + ",-5,5,0,10";
+  const LabelImage inside =
+      run_blobs(run.planes.patches, run.points, &run.planes.planes, {{"workspace", workspace}});
+  EXPECT_EQ(inside.count, 2);
+  const LabelImage everything = run_blobs(run.planes.patches, run.points, &run.planes.planes,
+                                          {{"workspace", std::string("-5,5,-5,5,0,10")}});
+  EXPECT_EQ(everything.count, 3);
+  for (const std::string bad : {"1,2,3", "1,0,0,1,0,1", "a,b,c,d,e,f", "0,1,0,1,0,1,2"}) {
+    try {
+      run_blobs(run.planes.patches, run.points, &run.planes.planes, {{"workspace", bad}});
+      ADD_FAILURE() << "accepted workspace '" << bad << "'";
+    } catch (const StageError& error) {
+      EXPECT_NE(std::string(error.what()).find(bad), std::string::npos) << error.what();
+    }
+  }
 }
 
 TEST(SupportPlanes, GivenUpGivesTheSameTable) {
