@@ -15,54 +15,23 @@
 #include <vector>
 
 #include "blobs/grow_blobs.hpp"
-#include "convert/points_stage.hpp"
-#include "edges/edges_max.hpp"
+#include "faces_input.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
-#include "filters/median_filter.hpp"
-#include "normals/cross_stage.hpp"
 #include "planes/support_planes.hpp"
 
 namespace {
-
-const std::filesystem::path kMosd = std::filesystem::path(FACET_SOURCE_DIR) / "data" / "mosd";
 
 struct Prepared {
   facet::Packet points;
   facet::Packet patches;
 };
 
-facet::DepthImage load_depth(const std::string& stem) {
-  facet::DepthImage depth;
-  depth.depth = cv::imread((kMosd / "depth" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED);
-  if (depth.depth.type() != CV_16UC1) throw std::runtime_error("cannot read " + stem);
-  // The bundled mOSD intrinsics (Kinect, 640x480).
-  depth.camera = {525.0, 525.0, 319.5, 239.5, depth.depth.cols, depth.depth.rows};
-  depth.frame.stem = stem;
-  return depth;
-}
-
 Prepared prepare(const std::string& stem) {
-  using facet::testing::StageRunner;
-  StageRunner<facet::filters::MedianFilter> median({{"size", std::int64_t{3}}});
-  median.set_input("depth", facet::Packet::make(load_depth(stem)));
-  median.run();
-  StageRunner<facet::convert::PointsStage> points;
-  points.set_input("depth", median.output_packet("depth"));
-  points.run();
-  StageRunner<facet::normals::CrossStage> normals({{"space", std::string("image")},
-                                                   {"image_depth", std::string("disparity")},
-                                                   {"radius", std::int64_t{2}},
-                                                   {"triangle", std::string("paper")}});
-  normals.set_input("depth", median.output_packet("depth"));
-  normals.run();
-  StageRunner<facet::edges::MaxNormalEdges> edges(
-      {{"pixels", std::int64_t{3}}, {"threshold", 0.85}});
-  edges.set_input("normals", normals.output_packet("normals"));
-  edges.run();
-  const auto& edge = edges.output<facet::EdgeImage>("edges");
-  const auto& xyz = points.output<facet::PointImage>("points");
+  const facet::bench::FacesInput input = facet::bench::faces_input(stem);
+  const auto& edge = *input.edges.get_if<facet::EdgeImage>();
+  const auto& xyz = *input.points.get_if<facet::PointImage>();
   cv::Mat surface = edge.mask == 0;
   for (int row = 0; row < surface.rows; ++row) {
     for (int col = 0; col < surface.cols; ++col) {
@@ -81,7 +50,7 @@ Prepared prepare(const std::string& stem) {
     if (stats.at<int>(i, cv::CC_STAT_AREA) >= 100) id[i] = ++patches.count;
   }
   patches.labels.forEach<std::int32_t>([&](std::int32_t& label, const int*) { label = id[label]; });
-  return {points.output_packet("points"), facet::Packet::make(std::move(patches))};
+  return {input.points, facet::Packet::make(std::move(patches))};
 }
 
 const Prepared& frame() {

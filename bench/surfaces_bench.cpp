@@ -7,17 +7,13 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
-#include <stdexcept>
 
-#include "convert/points_stage.hpp"
 #include "edges/edges_avg.hpp"
 #include "edges/edges_max.hpp"
+#include "faces_input.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
-#include "filters/median_filter.hpp"
 #include "grow/grow_surfaces.hpp"
-#include "normals/cross_stage.hpp"
 #include "surface_test_geometry.hpp"
 
 namespace {
@@ -78,39 +74,8 @@ BENCHMARK(BM_GrowSurfaces)
     ->Arg(8)
     ->Unit(benchmark::kMillisecond);
 
-struct GraphInput {
-  facet::Packet edges;
-  facet::Packet points;
-};
-
-// The inputs of grow.surfaces in graphs/tabletop.yaml, made by the same stages and settings.
-GraphInput tabletop_input(const std::string& stem) {
-  using facet::testing::StageRunner;
-  facet::DepthImage depth;
-  depth.depth = cv::imread((kMosd / "depth" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED);
-  if (depth.depth.type() != CV_16UC1) throw std::runtime_error("cannot read " + stem);
-  depth.camera = {525.0, 525.0, 319.5, 239.5, depth.depth.cols, depth.depth.rows};
-  StageRunner<facet::filters::MedianFilter> median({{"size", std::int64_t{3}}});
-  median.set_input("depth", facet::Packet::make(std::move(depth)));
-  median.run();
-  StageRunner<facet::convert::PointsStage> points;
-  points.set_input("depth", median.output_packet("depth"));
-  points.run();
-  StageRunner<facet::normals::CrossStage> normals({{"space", std::string("image")},
-                                                   {"image_depth", std::string("disparity")},
-                                                   {"radius", std::int64_t{2}},
-                                                   {"triangle", std::string("paper")}});
-  normals.set_input("depth", median.output_packet("depth"));
-  normals.run();
-  StageRunner<facet::edges::MaxNormalEdges> edges(
-      {{"pixels", std::int64_t{3}}, {"threshold", 0.85}});
-  edges.set_input("normals", normals.output_packet("normals"));
-  edges.run();
-  return {edges.output_packet("edges"), points.output_packet("points")};
-}
-
 void BM_GrowSurfacesTabletop(benchmark::State& state) {
-  static const GraphInput input = tabletop_input("learn0");
+  static const facet::bench::FacesInput input = facet::bench::faces_input("learn0");
   facet::testing::StageRunner<facet::grow::GrowSurfaces> grow;
   grow.set_input("edges", input.edges);
   grow.set_input("points", input.points);
