@@ -13,7 +13,10 @@ class MedianFilter final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  void warn_about_pinholes(const cv::Mat& depth, ProcessContext& ctx) const;
+
   ValidMedian median_;
+  double max_pinhole_ratio_;
 };
 
 }  // namespace facet::filters

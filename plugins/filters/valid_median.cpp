@@ -33,11 +33,16 @@ struct PaddedGeometry {
   }
 };
 
-// Resizes `buffer` to the geometry; the border is written only when the size changes, since
-// each frame overwrites exactly the interior.
+// Lays `buffer` out for an image of `size`: all invalid, written only when the image size
+// changes, since each frame overwrites exactly the interior. (Comparing the buffer's length
+// would not do: images of other sizes can need as many values, with the border and the columns
+// beyond the image elsewhere.)
 template <class Scalar>
-void prepare(std::vector<Scalar>& buffer, std::size_t total, Scalar invalid) {
-  if (buffer.size() != total) buffer.assign(total, invalid);
+void prepare(std::vector<Scalar>& buffer, cv::Size& prepared_for, cv::Size size, std::size_t total,
+             Scalar invalid) {
+  if (buffer.size() == total && prepared_for == size) return;
+  buffer.assign(total, invalid);
+  prepared_for = size;
 }
 
 }  // namespace
@@ -59,7 +64,8 @@ cv::Mat ValidMedian::apply(const cv::Mat& depth) {
 cv::Mat ValidMedian::apply_u16(const cv::Mat& depth) {
   constexpr std::uint16_t kBias = 0x8000;
   const PaddedGeometry geometry(depth, size_px_, kMedianLanesI16);
-  prepare(padded_u16_, geometry.total(), std::numeric_limits<std::int16_t>::min());
+  prepare(padded_u16_, padded_u16_for_, depth.size(), geometry.total(),
+          std::numeric_limits<std::int16_t>::min());
   row_u16_.resize(static_cast<std::size_t>(geometry.width_padded));
 
   for (int y = 0; y < depth.rows; ++y) {
@@ -89,7 +95,7 @@ cv::Mat ValidMedian::apply_u16(const cv::Mat& depth) {
 cv::Mat ValidMedian::apply_f32(const cv::Mat& depth) {
   constexpr float kInvalid = -std::numeric_limits<float>::infinity();
   const PaddedGeometry geometry(depth, size_px_, kMedianLanesF32);
-  prepare(padded_f32_, geometry.total(), kInvalid);
+  prepare(padded_f32_, padded_f32_for_, depth.size(), geometry.total(), kInvalid);
   row_f32_.resize(static_cast<std::size_t>(geometry.width_padded));
 
   for (int y = 0; y < depth.rows; ++y) {

@@ -36,9 +36,13 @@ class ValidMedian {
 
   int size_px_;
   bool fill_holes_;
+  // Each padded buffer remembers the image size it was laid out for: its border and the columns
+  // beyond the image are written only then, and must be laid out again for any other size.
   std::vector<std::int16_t> padded_u16_;
+  cv::Size padded_u16_for_;
   std::vector<std::int16_t> row_u16_;
   std::vector<float> padded_f32_;
+  cv::Size padded_f32_for_;
   std::vector<float> row_f32_;
 };
 

@@ -18,7 +18,8 @@ StageSpec FramesSource::spec() {
                    "read in natural order of their names (learn2 before learn10). Instead of a "
                    "folder, 'path' may be a glob of depth PNGs such as DIR/depth/learn*.png; "
                    "then DIR is the dataset folder. Ends the stream after the last frame "
-                   "unless 'loop' is set. Reports the metric valid_ratio (valid pixels / all).")
+                   "unless 'loop' is set. Reports the metric valid_ratio (valid pixels / all) and "
+                   "warns about a frame without any valid pixel.")
       .output<DepthImage>("depth",
                           "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
                           "file stem, timestamp and camera intrinsics.")
@@ -134,7 +135,13 @@ void FramesSource::process(ProcessContext& ctx) {
     }
 
     const double pixels = static_cast<double>(depth.depth.total());
-    ctx.metric("valid_ratio", static_cast<double>(cv::countNonZero(depth.depth)) / pixels);
+    const int valid_px = cv::countNonZero(depth.depth);
+    // Not an error (a sensor covered or pointed at the sky delivers such frames): the frame runs
+    // through the graph, which finds nothing in it; the warning tells the user why.
+    if (valid_px == 0) {
+      ctx.warn("no valid depth in '" + depth_file.filename().string() + "': every pixel is 0");
+    }
+    ctx.metric("valid_ratio", static_cast<double>(valid_px) / pixels);
     ctx.output("depth", std::move(depth));
     if (!labels.labels.empty()) ctx.output("labels", std::move(labels));
     ++emitted_;

@@ -219,6 +219,22 @@ TEST_F(TinyDataset, SkipModeWarnsNamingTheFileAndGoesOn) {
   EXPECT_TRUE(runner.at_end_of_stream());
 }
 
+// A frame without a single valid pixel is read like any other (later stages find nothing in it),
+// with a warning naming the file.
+TEST_F(TinyDataset, FrameWithoutValidDepthWarnsNamingTheFile) {
+  write_png(file("depth/f2.png"), depth_mm(kWidth, kHeight, 0));
+  Runner runner({{"path", path()}});
+  runner.run();
+  EXPECT_TRUE(runner.warnings().empty());
+  runner.run();
+  EXPECT_EQ(runner.output<DepthImage>("depth").frame.stem, "f2");
+  ASSERT_EQ(runner.warnings().size(), 1U);
+  EXPECT_NE(runner.warnings()[0].find("no valid depth"), std::string::npos) << runner.warnings()[0];
+  EXPECT_NE(runner.warnings()[0].find("f2.png"), std::string::npos) << runner.warnings()[0];
+  runner.run();
+  EXPECT_TRUE(runner.warnings().empty());
+}
+
 TEST_F(TinyDataset, SkipModeEndsALoopWhereEveryFrameIsBad) {
   for (const char* stem : {"f1", "f2", "f10"})
     write_text(file(std::string("depth/") + stem + ".png"), "x");

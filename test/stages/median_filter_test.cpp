@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <opencv2/core.hpp>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -152,6 +153,29 @@ TEST(ValidMedian, FullVgaFrameMatchesReference) {
   }
 }
 
+// The scratch buffers are laid out again whenever the frame size changes, also when the new
+// size needs as many padded values as the old one (16x15 then 32x7 at 3x3: the border lies
+// elsewhere) or the same padded row length (16 then 10 columns: columns 10-15 are outside the
+// new image). Stale values there once leaked into the medians at the image border.
+TEST(ValidMedian, AReusedInstanceMatchesTheReferenceAcrossFrameSizes) {
+  const std::vector<cv::Size> sizes = {{16, 15}, {32, 7}, {16, 6}, {10, 6}, {40, 40}, {3, 2}};
+  for (int size : {3, 5}) {
+    for (bool fill : {false, true}) {
+      ValidMedian median(size, fill);
+      std::uint64_t seed = 20;
+      for (const cv::Size frame : sizes) {
+        SCOPED_TRACE(::testing::Message() << size << "x" << size << (fill ? " fill " : " ")
+                                          << frame.width << "x" << frame.height);
+        const cv::Mat depth = random_depth_mm(frame.width, frame.height, 0.3, ++seed);
+        EXPECT_TRUE(
+            same_image(median.apply(depth), reference_median<std::uint16_t>(depth, size, fill)));
+        const cv::Mat metres = to_metres_with_nans(depth, ++seed);
+        EXPECT_TRUE(same_image(median.apply(metres), reference_median<float>(metres, size, fill)));
+      }
+    }
+  }
+}
+
 TEST(ValidMedian, ZerosNeverPullTheMedianDown) {
   // Five holes and four measurements of 1000 mm around a valid centre: cv::medianBlur gives 0.
   cv::Mat depth = (cv::Mat_<std::uint16_t>(3, 3) << 0, 1000, 0, 1000, 1000, 0, 0, 1000, 0);
@@ -237,6 +261,66 @@ TEST(MedianFilterStage, KeepsTheHeaderAndRejectsOtherSizes) {
 
   using Runner = facet::testing::StageRunner<facet::filters::MedianFilter>;
   EXPECT_THROW(Runner({{"size", std::int64_t{4}}}), std::invalid_argument);
+}
+
+double metric_value(const std::vector<facet::Metric>& metrics, const std::string& name) {
+  for (const auto& metric : metrics) {
+    if (metric.name == name) return metric.value;
+  }
+  ADD_FAILURE() << "no metric " << name;
+  return -1.0;
+}
+
+// Single pixels without depth (2 % of a VGA frame) break surfaces into fragments downstream: the
+// stage says so and names the remedy, unless it fills them itself. Large holes (a cropped
+// background) and the few pinholes of real frames are no reason to warn.
+TEST(MedianFilterStage, WarnsAboutPinholesUnlessItFillsThem) {
+  using Runner = facet::testing::StageRunner<facet::filters::MedianFilter>;
+  auto run = [](Runner& runner, const cv::Mat& depth) {
+    facet::DepthImage input;
+    input.depth = depth;
+    runner.set_input("depth", facet::Packet::make(input));
+    runner.run();
+  };
+  cv::Mat pinholes = random_depth_mm(640, 480, 0.02, 3);
+  Runner plain;
+  run(plain, pinholes);
+  ASSERT_EQ(plain.warnings().size(), 1U);
+  EXPECT_NE(plain.warnings()[0].find("pinholes"), std::string::npos) << plain.warnings()[0];
+  EXPECT_NE(plain.warnings()[0].find("fill_holes: true"), std::string::npos) << plain.warnings()[0];
+  EXPECT_NEAR(metric_value(plain.metrics(), "pinhole_ratio"), 0.02 * 0.98 * 0.98 * 0.98 * 0.98,
+              0.004);
+
+  Runner filling({{"fill_holes", true}});
+  run(filling, pinholes);
+  EXPECT_TRUE(filling.warnings().empty());
+
+  Runner tolerant({{"max_pinhole_ratio", 0.05}});
+  run(tolerant, pinholes);
+  EXPECT_TRUE(tolerant.warnings().empty());
+
+  cv::Mat cropped = random_depth_mm(640, 480, 0.0, 4);
+  cropped.rowRange(0, 200).setTo(0);
+  cropped.colRange(500, 640).setTo(0);
+  Runner quiet;
+  run(quiet, cropped);
+  EXPECT_TRUE(quiet.warnings().empty());
+  EXPECT_EQ(metric_value(quiet.metrics(), "pinhole_ratio"), 0.0);
+
+  // Float metres: NaN is no depth either.
+  cv::Mat metres(480, 640, CV_32FC1, cv::Scalar(1.0F));
+  for (int y = 0; y < 480; ++y) {
+    for (int x = 1 + 10 * (y % 2); x < 640; x += 20)
+      metres.at<float>(y, x) = std::numeric_limits<float>::quiet_NaN();
+  }
+  Runner floats;
+  run(floats, metres);
+  EXPECT_EQ(floats.warnings().size(), 1U);
+
+  // Frames too small for a pinhole (no pixel has four neighbours) are no error.
+  Runner tiny;
+  run(tiny, cv::Mat(2, 1, CV_16UC1, cv::Scalar(0)));
+  EXPECT_TRUE(tiny.warnings().empty());
 }
 
 }  // namespace
