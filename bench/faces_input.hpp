@@ -5,10 +5,9 @@
 // edges.max over 3 pixels at 0.85. For benchmarks that time one later stage on real input.
 
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
-#include <stdexcept>
 #include <string>
 
+#include "bundled_frames.hpp"
 #include "convert/points_stage.hpp"
 #include "edges/edges_max.hpp"
 #include "facet/testing/stage_runner.hpp"
@@ -26,12 +25,7 @@ struct FacesInput {
 inline FacesInput faces_input(const std::string& stem) {
   using testing::StageRunner;
   const auto mosd = std::filesystem::path(FACET_SOURCE_DIR) / "data" / "mosd";
-  DepthImage depth;
-  depth.depth = cv::imread((mosd / "depth" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED);
-  if (depth.depth.type() != CV_16UC1) throw std::runtime_error("cannot read " + stem);
-  // The bundled mOSD intrinsics (Kinect, 640x480).
-  depth.camera = {525.0, 525.0, 319.5, 239.5, depth.depth.cols, depth.depth.rows};
-  depth.frame.stem = stem;
+  DepthImage depth = test::bundled_mosd_frame(mosd, stem);
   StageRunner<filters::MedianFilter> median({{"size", std::int64_t{3}}});
   median.set_input("depth", Packet::make(std::move(depth)));
   median.run();

@@ -7,13 +7,11 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <stdexcept>
 #include <string>
 
+#include "bundled_frames.hpp"
 #include "convert/points_stage.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
@@ -27,36 +25,9 @@ namespace {
 
 const std::filesystem::path kMosd = std::filesystem::path(FACET_SOURCE_DIR) / "data" / "mosd";
 
-// The bundled intrinsics file is flat "key: value" lines; '#' starts a comment.
-facet::CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  std::map<std::string, double> values;
-  std::string line;
-  while (std::getline(in, line)) {
-    line = line.substr(0, line.find('#'));
-    const auto colon = line.find(':');
-    if (colon == std::string::npos) continue;
-    const auto key_begin = line.find_first_not_of(' ');
-    values[line.substr(key_begin, colon - key_begin)] = std::stod(line.substr(colon + 1));
-  }
-  return {values.at("fx"),
-          values.at("fy"),
-          values.at("cx"),
-          values.at("cy"),
-          static_cast<int>(values.at("width")),
-          static_cast<int>(values.at("height"))};
-}
-
 // learn0: a cluttered table top, 640x480 uint16 mm, with large invalid (cropped) areas.
 facet::DepthImage real_frame() {
-  const auto file = kMosd / "depth" / "learn0.png";
-  facet::DepthImage image;
-  image.depth = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
-  if (image.depth.type() != CV_16UC1) throw std::runtime_error("cannot read " + file.string());
-  image.camera = read_intrinsics(kMosd / "intrinsics.yaml");
-  image.frame.stem = "learn0";
-  return image;
+  return facet::test::bundled_mosd_frame(kMosd, "learn0");
 }
 
 template <class StageT>

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bundled_frames.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
 #include "synthetic_scene.hpp"
@@ -61,27 +62,7 @@ inline Eigen::Vector3d tilted_normal(double tilt_deg, double azimuth_deg) {
 
 // The bundled real frame (Kinect-type sensor, 640x480, uint16 mm) with its intrinsics.
 inline DepthImage real_frame(const std::string& stem = "learn0") {
-  const auto mosd = std::filesystem::path(FACET_TEST_DATA_DIR) / "mosd";
-  DepthImage image;
-  image.depth = cv::imread((mosd / "depth" / (stem + ".png")).string(), cv::IMREAD_UNCHANGED);
-  if (image.depth.type() != CV_16UC1) throw std::runtime_error("cannot read frame " + stem);
-  std::ifstream in(mosd / "intrinsics.yaml");
-  std::map<std::string, double> values;
-  std::string line;
-  while (std::getline(in, line)) {
-    line = line.substr(0, line.find('#'));
-    const auto colon = line.find(':');
-    if (colon == std::string::npos) continue;
-    const auto begin = line.find_first_not_of(' ');
-    values[line.substr(begin, colon - begin)] = std::stod(line.substr(colon + 1));
-  }
-  image.camera = {values.at("fx"),
-                  values.at("fy"),
-                  values.at("cx"),
-                  values.at("cy"),
-                  static_cast<int>(values.at("width")),
-                  static_cast<int>(values.at("height"))};
-  return image;
+  return bundled_mosd_frame(std::filesystem::path(FACET_TEST_DATA_DIR) / "mosd", stem);
 }
 
 // Kinect v1 raw disparity of a depth in mm, as the image space's 'disparity' unit defines it.

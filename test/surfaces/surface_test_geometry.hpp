@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bundled_frames.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::test {
@@ -64,28 +65,6 @@ inline NormalImage cross_normals(const PointImage& points, int r = 2) {
   return out;
 }
 
-// Reads fx, fy, cx, cy, width, height from a flat "key: value" YAML file.
-inline CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot open " + file.string());
-  CameraIntrinsics camera;
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto colon = line.find(':');
-    if (line.empty() || line[0] == '#' || colon == std::string::npos) continue;
-    const std::string key = line.substr(0, colon);
-    const double value = std::stod(line.substr(colon + 1));
-    if (key == "fx") camera.fx = value;
-    if (key == "fy") camera.fy = value;
-    if (key == "cx") camera.cx = value;
-    if (key == "cy") camera.cy = value;
-    if (key == "width") camera.width = static_cast<int>(value);
-    if (key == "height") camera.height = static_cast<int>(value);
-  }
-  if (!camera.valid()) throw std::runtime_error("incomplete intrinsics in " + file.string());
-  return camera;
-}
-
 // A bundled mOSD frame (uint16 mm PNG) as metric points and cross-product normals (r = 2).
 struct RealFrame {
   PointImage points;
@@ -93,11 +72,9 @@ struct RealFrame {
 };
 
 inline RealFrame load_mosd_frame(const std::filesystem::path& mosd_dir, const std::string& stem) {
-  const auto file = mosd_dir / "depth" / (stem + ".png");
-  const cv::Mat depth = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
-  if (depth.type() != CV_16UC1) throw std::runtime_error("cannot read " + file.string());
+  const DepthImage depth = bundled_mosd_frame(mosd_dir, stem);
   RealFrame frame;
-  frame.points = points_from_depth(depth, read_intrinsics(mosd_dir / "intrinsics.yaml"));
+  frame.points = points_from_depth(depth.depth, depth.camera);
   frame.normals = cross_normals(frame.points);
   return frame;
 }
