@@ -9,6 +9,7 @@
 #include "facet/stage.hpp"
 #include "facet/types/frame.hpp"
 #include "facet/types/images.hpp"
+#include "io/frame_listing.hpp"
 
 namespace facet::io {
 
@@ -27,9 +28,8 @@ class FramesSource final : public Stage {
  private:
   enum class OnError { fail, skip };
 
-  // Reads one scheduled frame; throws StageError naming the file when it is unusable.
-  void read_frame(const std::filesystem::path& depth_file, DepthImage& depth,
-                  LabelImage& labels) const;
+  // Reads frame `index` of the listing; throws StageError naming the file when it is unusable.
+  void read_frame(std::size_t index, DepthImage& depth, LabelImage& labels) const;
 
   // Parameters.
   std::string path_;
@@ -40,11 +40,14 @@ class FramesSource final : public Stage {
   std::int64_t stride_;
   bool loop_;
   double fps_hz_;
+  double depth_scale_;  // depth PNG units per metre; 0 = the layout's convention
 
   // Resolved by open().
   CameraIntrinsics camera_;
+  FrameListing listing_;
   std::vector<std::filesystem::path> schedule_;
-  std::filesystem::path labels_dir_;  // empty when the dataset has no such folder
+  std::vector<std::size_t> schedule_index_;  // per scheduled frame: its index in listing_
+  std::filesystem::path labels_dir_;         // empty when the dataset has no such folder
 
   // Stream position.
   std::size_t next_ = 0;
