@@ -1,0 +1,271 @@
+#include "pcd/pcd_source.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <opencv2/core.hpp>
+#include <system_error>
+
+#include "io/frame_listing.hpp"
+#include "io/intrinsics_file.hpp"
+#include "io/natural_order.hpp"
+#include "pcd/pcd_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace facet::pcd {
+namespace {
+
+bool has_pcd_extension(const fs::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".pcd";
+}
+
+template <class Keep>
+std::vector<fs::path> files_in(const fs::path& folder, Keep keep) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    if (entry.is_regular_file(error) && keep(entry.path())) files.push_back(entry.path());
+  }
+  if (error) throw StageError("cannot list folder '" + folder.string() + "': " + error.message());
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    return io::natural_less(a.filename().string(), b.filename().string());
+  });
+  return files;
+}
+
+LabelScheme label_scheme(const std::string& name) {
+  if (name == "mosd") return LabelScheme::mosd;
+  if (name == "mosd_parts") return LabelScheme::mosd_parts;
+  return LabelScheme::raw;
+}
+
+}  // namespace
+
+std::vector<fs::path> list_pcd_files(const std::string& path) {
+  if (path.empty()) throw StageError("param 'path' is empty: set a folder of .pcd files");
+  std::error_code error;
+  if (io::is_glob(path)) {
+    const fs::path pattern(path);
+    const fs::path folder = pattern.has_parent_path() ? pattern.parent_path() : fs::path(".");
+    if (io::is_glob(folder.string())) {
+      throw StageError("path '" + path +
+                       "': wildcards are supported in the file name only, not in folders");
+    }
+    if (!fs::is_directory(folder, error)) {
+      throw StageError("path '" + path + "': folder '" + folder.string() + "' does not exist");
+    }
+    const std::string name_pattern = pattern.filename().string();
+    auto files = files_in(folder, [&](const fs::path& file) {
+      return io::wildcard_match(name_pattern, file.filename().string());
+    });
+    if (files.empty()) throw StageError("path '" + path + "' matches no files");
+    return files;
+  }
+  if (fs::is_regular_file(path, error)) return {fs::path(path)};
+  if (!fs::is_directory(path, error)) {
+    throw StageError("path '" + path +
+                     "' does not exist (give a folder of .pcd files, a glob "
+                     "such as 'clouds/*.pcd' or one .pcd file)");
+  }
+  auto files = files_in(path, has_pcd_extension);
+  if (files.empty()) throw StageError("no frames: folder '" + path + "' holds no .pcd files");
+  return files;
+}
+
+StageSpec PcdSource::spec() {
+  return StageSpec(
+             "io.pcd",
+             "Reads point clouds from PCD files (PCL's format) as depth frames and ground-truth "
+             "labels.\n"
+             "'path' is a folder of *.pcd files (read in natural order of their names: learn2 "
+             "before learn10), a glob such as DIR/learn*.pcd, or one file. Every encoding PCL "
+             "reads is accepted (ascii, binary, binary_compressed); the fields x, y, z (metres, "
+             "camera frame, z forward) are required, a 'label' field becomes the labels output. "
+             "Depth = round(z * 1000) mm; NaN, infinite and non-positive z are invalid (0). A "
+             "cloud whose points all have z < 0 is taken as stored with y and z negated and is "
+             "flipped back (with a warning). An organized cloud (height > 1) gives pixel (u, v) "
+             "the point v * width + u. Intrinsics: from 'intrinsics' or fx, fy, cx, cy when "
+             "given, otherwise fitted per frame by least squares of u = fx * x / z + cx and "
+             "v = fy * y / z + cy over the valid points (metric fit_rms_px). An unorganized "
+             "cloud (height 1) is re-projected with the given intrinsics (the nearest point wins "
+             "a pixel) and refused without them. Ends the stream after the last file unless "
+             "'loop' is set. Reports the metric valid_ratio (valid pixels / all).")
+      .output<DepthImage>("depth",
+                          "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
+                          "file stem, timestamp and camera intrinsics.")
+      .output<LabelImage>("labels",
+                          "Ground-truth segment ids from the 'label' field, CV_32SC1 "
+                          "(0 = background, and wherever depth is invalid); an empty packet for "
+                          "clouds without a label field.")
+      .param("path", "",
+             "Folder of .pcd files, a glob (wildcards * and ? in the file name) or "
+             "one .pcd file.",
+             {.required = true})
+      .param("intrinsics", "",
+             "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = use fx, fy, cx, cy, "
+             "or fit the intrinsics from each organized cloud when those are 0.",
+             {.origin = "dataset format, see docs/data-formats.md"})
+      .param("fx", 0.0, "Focal length in x; 0 = not given.", {.unit = "px", .min = 0.0})
+      .param("fy", 0.0, "Focal length in y; 0 = not given.", {.unit = "px", .min = 0.0})
+      .param("cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"})
+      .param("cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"})
+      .param("width", 0,
+             "Image width for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
+             "organized cloud's width.",
+             {.unit = "px", .min = 0.0})
+      .param("height", 0,
+             "Image height for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
+             "organized cloud's height.",
+             {.unit = "px", .min = 0.0})
+      .param("labels", "raw",
+             "How label values become segment ids: raw keeps them; mosd reads the mOSD scheme "
+             "(0-9 = invalid and table, 10k..10k+9 = parts of object k-1) as one id per object; "
+             "mosd_parts gives every mOSD part (value >= 20) its own id.",
+             {.choices = {std::string("raw"), std::string("mosd"), std::string("mosd_parts")},
+              .origin = "raw: the file's own ids"})
+      .param("on_error", "fail",
+             "What to do with an unusable file (unreadable, no x/y/z, intrinsics not fittable): "
+             "fail stops the run with an error naming the file; skip warns and goes on.",
+             {.choices = {std::string("fail"), std::string("skip")},
+              .origin = "fail: a damaged recording should not pass unnoticed"})
+      .param("start", 0, "Index of the first file, in natural order.",
+             {.unit = "frames", .min = 0.0})
+      .param("stride", 1, "Read every stride-th file from start on.",
+             {.unit = "frames", .min = 1.0})
+      .param("loop", false, "Start again from 'start' after the last file instead of ending.")
+      .param("fps", 30.0,
+             "Nominal frame rate; timestamps are frame index / fps (PCD files carry no time "
+             "stamp).",
+             {.unit = "Hz",
+              .min = 0.001,
+              .max = 10000.0,
+              .origin = "the 30 Hz of Kinect-type and Xtion depth cameras"})
+      .concurrency(Concurrency::serial);
+}
+
+PcdSource::PcdSource(const Params& params)
+    : path_(params.get_string("path")),
+      intrinsics_param_(params.get_string("intrinsics")),
+      scheme_(label_scheme(params.get_string("labels"))),
+      on_error_(params.get_string("on_error") == "skip" ? OnError::skip : OnError::fail),
+      start_(params.get_int("start")),
+      stride_(params.get_int("stride")),
+      loop_(params.get_bool("loop")),
+      fps_hz_(params.get_double("fps")) {
+  given_.fx = params.get_double("fx");
+  given_.fy = params.get_double("fy");
+  given_.cx = params.get_double("cx");
+  given_.cy = params.get_double("cy");
+  given_.width = static_cast<int>(params.get_int("width"));
+  given_.height = static_cast<int>(params.get_int("height"));
+}
+
+void PcdSource::open(const OpenContext& /*ctx*/) {
+  const std::vector<fs::path> files = list_pcd_files(path_);
+  const bool focal_given = given_.fx > 0.0 || given_.fy > 0.0;
+  if (!intrinsics_param_.empty() && focal_given) {
+    throw StageError("set either param 'intrinsics' or params fx, fy, cx, cy, not both");
+  }
+  if (focal_given && !(given_.fx > 0.0 && given_.fy > 0.0)) {
+    throw StageError("params fx and fy must both be set (> 0) when either is");
+  }
+  have_camera_ = !intrinsics_param_.empty() || focal_given;
+  camera_ = intrinsics_param_.empty() ? given_ : io::read_intrinsics(intrinsics_param_);
+
+  const auto count = static_cast<std::int64_t>(files.size());
+  if (start_ >= count) {
+    throw StageError("param start=" + std::to_string(start_) + " but '" + path_ + "' has only " +
+                     std::to_string(count) + " files");
+  }
+  schedule_.clear();
+  for (std::int64_t i = start_; i < count; i += stride_)
+    schedule_.push_back(files[static_cast<std::size_t>(i)]);
+  next_ = 0;
+  emitted_ = 0;
+  emitted_in_pass_ = 0;
+}
+
+void PcdSource::process(ProcessContext& ctx) {
+  while (true) {
+    if (next_ >= schedule_.size()) {
+      // A pass in which every file was skipped would loop forever: end instead.
+      if (!loop_ || emitted_in_pass_ == 0) {
+        ctx.end_of_stream();
+        return;
+      }
+      next_ = 0;
+      emitted_in_pass_ = 0;
+    }
+    const fs::path& file = schedule_[next_++];
+    std::string what = "'";  // (built by appending: GCC 12 warns about "'" + string)
+    what += file.string();
+    what += '\'';
+
+    CameraIntrinsics camera;
+    CloudImages images;
+    try {
+      CloudPoints cloud = read_pcd(file);
+      if (flip_if_behind_camera(cloud)) {
+        ctx.warn(what + ": every point has z < 0; read as stored with y and z negated");
+      }
+      if (cloud.organized()) {
+        if (have_camera_) {
+          camera = camera_;
+          if ((camera.width > 0 && camera.width != cloud.width) ||
+              (camera.height > 0 && camera.height != cloud.height)) {
+            throw StageError(what + " is an organized " + std::to_string(cloud.width) + "x" +
+                             std::to_string(cloud.height) + " cloud, but the intrinsics are for " +
+                             std::to_string(camera.width) + "x" + std::to_string(camera.height));
+          }
+          camera.width = cloud.width;
+          camera.height = cloud.height;
+        } else {
+          const IntrinsicsFit fit = fit_intrinsics(cloud, what);
+          camera = fit.camera;
+          ctx.metric("fit_rms_px", fit.rms_px);
+        }
+        images = organized_images(cloud);
+      } else {
+        if (!have_camera_ || camera_.width <= 0 || camera_.height <= 0) {
+          throw StageError(what + " is an unorganized cloud (height 1, " +
+                           std::to_string(cloud.size()) +
+                           " points): give the intrinsics (param 'intrinsics', or fx, fy, cx, "
+                           "cy, width and height) to re-project it into an image");
+        }
+        camera = camera_;
+        images = projected_images(cloud, camera);
+      }
+    } catch (const StageError& error) {
+      if (on_error_ == OnError::fail) throw;
+      ctx.warn(std::string("skipped frame: ") + error.what());
+      continue;
+    }
+
+    FrameHeader header;
+    header.camera = camera;
+    header.frame.index = emitted_;
+    header.frame.stem = file.stem().string();
+    header.frame.timestamp_ns =
+        static_cast<std::int64_t>(static_cast<double>(emitted_) * 1e9 / fps_hz_);
+    if (images.out_of_range > 0) {
+      ctx.warn(what + ": " + std::to_string(images.out_of_range) +
+               " points beyond 65.535 m left out (depth is 16-bit mm)");
+    }
+    const double pixels = static_cast<double>(images.depth.total());
+    ctx.metric("valid_ratio", static_cast<double>(cv::countNonZero(images.depth)) / pixels);
+    if (!images.labels.empty()) {
+      LabelImage labels{header, std::move(images.labels), 0};
+      labels.count = apply_label_scheme(labels.labels, scheme_);
+      ctx.output("labels", std::move(labels));
+    }
+    ctx.output("depth", DepthImage{header, std::move(images.depth)});
+    ++emitted_;
+    ++emitted_in_pass_;
+    return;
+  }
+}
+
+}  // namespace facet::pcd
