@@ -174,8 +174,9 @@ StageSpec SupportPlaneStage::spec() {
              "large_view_fraction of the view).",
              {.min = 0.0, .max = 1.0, .origin = "measured on mOSD and the uncropped OSD frame"})
       .param("large_view_fraction", 0.15,
-             "Candidates holding this share of the valid pixels skip the "
-             "max_support_behind_fraction test (a table seen above a dominant floor).",
+             "Horizontal candidates (within horizontal_max_deg of up) holding this share of the "
+             "valid pixels skip the max_support_behind_fraction test (a table seen above a "
+             "dominant floor); a large vertical face standing on the table stays an object.",
              {.min = 0.0, .max = 1.0, .origin = "measured: mOSD box faces hold at most 0.13"})
       .param("sample_stride_px", 4,
              "The support test looks at every n-th row and column (the assignment to planes "
@@ -225,6 +226,8 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
   support_rule_.min_object_fraction = params.get_double("min_object_fraction");
   support_rule_.max_support_behind_fraction = params.get_double("max_support_behind_fraction");
   support_rule_.large_view_fraction = params.get_double("large_view_fraction");
+  support_rule_.min_cos_horizontal =
+      std::cos(params.get_double("horizontal_max_deg") * std::numbers::pi / 180.0);
   support_rule_.sample_stride_px = static_cast<int>(params.get_int("sample_stride_px"));
   try {
     up_ = parse_up(params.get_string("up"));
@@ -262,7 +265,7 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   Eigen::Vector3f up = up_.value_or(camera_up);
   if (!up_ && dominant >= 0) up = models[dominant].normal;
   const std::vector<CandidateEvidence> evidence =
-      decide_support(xyz, models, dominant, support_rule_);
+      decide_support(xyz, models, dominant, up, support_rule_);
 
   // Assignment, largest plane first: a valid point within delta of a support plane joins the
   // first such plane in candidate order (what taking the planes one after the other would

@@ -45,7 +45,8 @@ SampleBits classify_samples(const cv::Mat& points, const std::vector<PlaneModel>
 
 std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
                                               const std::vector<PlaneModel>& candidates,
-                                              int dominant, const SupportRule& rule) {
+                                              int dominant, const Eigen::Vector3f& up,
+                                              const SupportRule& rule) {
   if (candidates.size() > 32) throw std::invalid_argument("at most 32 candidate planes");
   std::vector<CandidateEvidence> evidence(candidates.size());
   if (candidates.empty()) return evidence;
@@ -98,9 +99,12 @@ std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
       const double denominator =
           std::max(static_cast<double>(objects), rule.min_object_fraction * valid);
       evidence[i].behind_fraction = static_cast<double>(behind) / denominator;
+      // A large horizontal plane above a dominant floor is a table, not a box top; a large
+      // vertical face that stands on the table is still an object (a big box close up).
+      const bool large_table = evidence[i].view_fraction >= rule.large_view_fraction &&
+                               std::abs(candidates[i].normal.dot(up)) >= rule.min_cos_horizontal;
       const bool stands_on_support =
-          evidence[i].support_behind_fraction > rule.max_support_behind_fraction &&
-          evidence[i].view_fraction < rule.large_view_fraction;
+          evidence[i].support_behind_fraction > rule.max_support_behind_fraction && !large_table;
       if (!stands_on_support && evidence[i].view_fraction >= rule.min_view_fraction &&
           evidence[i].behind_fraction <= rule.max_behind_fraction) {
         accepted |= self;

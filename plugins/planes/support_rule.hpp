@@ -28,8 +28,9 @@ struct SupportRule {
   double max_behind_fraction = 0.05;  // of the object candidate pixels, behind the plane
   double min_object_fraction = 0.02;  // of the valid pixels: floor of the behind denominator
   double max_support_behind_fraction = 0.1;  // of the dominant plane, behind a candidate
-  double large_view_fraction = 0.15;         // candidates this large skip the dominant-plane test
-  int sample_stride_px = 2;  // the evidence is gathered on every n-th row and column
+  double large_view_fraction = 0.15;  // horizontal candidates this large skip the dominant test
+  double min_cos_horizontal = 0.985;  // cos(alpha_z): a normal this close to up is horizontal
+  int sample_stride_px = 2;           // the evidence is gathered on every n-th row and column
 };
 
 struct CandidateEvidence {
@@ -40,9 +41,10 @@ struct CandidateEvidence {
 };
 
 // At most 32 candidates (one bit each per sample). `dominant` is the index of the dominant
-// horizontal candidate (always accepted) or -1.
+// horizontal candidate (always accepted) or -1; `up` is world up (unit, camera frame).
 std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
                                               const std::vector<PlaneModel>& candidates,
-                                              int dominant, const SupportRule& rule);
+                                              int dominant, const Eigen::Vector3f& up,
+                                              const SupportRule& rule);
 
 }  // namespace facet::planes

@@ -142,6 +142,21 @@ TEST(GrowBlobs, WorkspaceBoxKeepsTheObjectsInside) {
   }
 }
 
+// A big box close up: its front face holds a large share of the view, but it stands on the
+// table and is vertical, so it stays an object (only horizontal planes that large are tables).
+TEST(SupportPlanes, LargeBoxFaceCloseUpStaysAnObject) {
+  SceneBuilder scene;
+  scene.plane(kTable.table_point, kTable.up);
+  kTable.box_on_table(scene, 0.0, 0.0, {0.3, 0.15, 0.3});
+  const SceneRun run = run_scene(scene);
+  const auto box_px = static_cast<double>(pixels_of(run.scene.object, 2));
+  ASSERT_GT(box_px, 0.25 * static_cast<double>(run.scene.object.total()));
+  ASSERT_EQ(run.planes.planes.planes.size(), 1u);
+  EXPECT_EQ(run.blobs.count, 1);
+  EXPECT_GT(static_cast<double>(count_where(run.scene.object, 2, run.blobs.labels, 1)),
+            0.9 * box_px);
+}
+
 TEST(SupportPlanes, GivenUpGivesTheSameTable) {
   const SceneBuilder builder = table_with_boxes();
   const RenderedScene scene = builder.render();
