@@ -1,6 +1,8 @@
 #include "grow/grow_surfaces.hpp"
 
+#include <cmath>
 #include <opencv2/core.hpp>
+#include <string>
 #include <utility>
 
 #include "facet/image_checks.hpp"
@@ -60,12 +62,19 @@ StageSpec GrowSurfaces::spec() {
               .max = 1.0,
               .origin = "authors' later code used 10-15 mm; 10 mm = the paper's blob distance "
                         "(Delta_blob), the same neighbour-to-neighbour linkage"})
+      .param("max_unassigned_ratio", 0.25,
+             "Warn when more than this share of the valid pixels ends up in no patch.",
+             {.min = 0.0,
+              .max = 1.0,
+              .origin = "measured: 0.004-0.06 on the bundled frames, 0.3-0.8 on noisy frames "
+                        "and grids of 2.5 cm boxes"})
       .concurrency(Concurrency::clonable);
 }
 
 GrowSurfaces::GrowSurfaces(const Params& params)
     : connectivity_(static_cast<int>(params.get_int("connectivity"))),
       min_size_px_(params.get_int("min_size_px")),
+      max_unassigned_ratio_(params.get_double("max_unassigned_ratio")),
       assignment_(AssignmentRule{static_cast<int>(params.get_int("assign_radius_px")),
                                  params.get_double("assign_max_distance_m")}) {}
 
@@ -96,8 +105,15 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   const auto valid_px =
       static_cast<double>(regions.labelled_px + assigned.assigned_px + assigned.unassigned_px);
   ctx.metric("patches", regions.count);
-  ctx.metric("unassigned_ratio",
-             valid_px > 0.0 ? static_cast<double>(assigned.unassigned_px) / valid_px : 0.0);
+  const double unassigned_ratio =
+      valid_px > 0.0 ? static_cast<double>(assigned.unassigned_px) / valid_px : 0.0;
+  ctx.metric("unassigned_ratio", unassigned_ratio);
+  if (unassigned_ratio > max_unassigned_ratio_) {
+    ctx.warn(std::to_string(std::lround(100.0 * unassigned_ratio)) +
+             " % of the valid pixels are in no patch (more than max_unassigned_ratio): noisy "
+             "depth, many holes (filter.median fill_holes), or surfaces smaller than "
+             "min_size_px between edges (objects too small or too far away)");
+  }
   ctx.output("patches", std::move(patches));
   ctx.output("adjacency", std::move(adjacency));
 }

@@ -263,8 +263,9 @@ TEST(TabletopBadInput, TableSeenEdgeOn) {
     EXPECT_NE(majority_labels(scene->object, 2, frame.labels)[2], 0) << stem << ": box not found";
   }
   // From 10 cm the table strip is a support plane; from 2 cm it breaks into pieces too small to
-  // be one, and the run says so.
-  EXPECT_TRUE(run.frame("h10").warnings.empty()) << run.frame("h10").warning_text();
+  // be one, and the run says so. (From both, most of the grazing table is in no surface patch,
+  // which grow.surfaces reports.)
+  EXPECT_FALSE(run.frame("h10").warned("no support plane")) << run.frame("h10").warning_text();
   EXPECT_TRUE(run.frame("h2").warned("no support plane")) << run.frame("h2").warning_text();
 }
 
@@ -300,7 +301,8 @@ TEST(TabletopBadInput, NoisyFrames) {
   const FrameResult& random_frame = plain.frame("a_random");
   EXPECT_EQ(random_frame.objects(), 0u) << random_frame.json;
   EXPECT_TRUE(random_frame.warned("no support plane")) << random_frame.warning_text();
-  EXPECT_EQ(random_frame.warnings.size(), 1u) << random_frame.warning_text();
+  EXPECT_TRUE(random_frame.warned("in no patch")) << random_frame.warning_text();
+  EXPECT_EQ(random_frame.warnings.size(), 2u) << random_frame.warning_text();
   const FrameResult& noisy = plain.frame("b_noisy");
   EXPECT_TRUE(noisy.warned("pinholes")) << noisy.warning_text();
   EXPECT_TRUE(noisy.warned("fill_holes: true")) << noisy.warning_text();

@@ -139,6 +139,23 @@ TEST(GrowSurfaces, SmallRegionsReturnToThePoolAndJoinTheirNeighbour) {
   EXPECT_EQ(kept.patches.labels.at<std::int32_t>(22, 22), 2);
 }
 
+// A frame whose surfaces are mostly too small to keep (a fine grid of edges, as noise or a
+// grid of tiny objects gives) warns; a clean frame does not.
+TEST(GrowSurfaces, WarnsWhenMostPixelsAreInNoPatch) {
+  FlatInput input = flat_input(120, 120);
+  EXPECT_TRUE(run_grow(input.edges, input.points).warnings.empty());
+  for (int i = 0; i < 120; i += 8) {
+    cv::line(input.edges.mask, {i, 0}, {i, 119}, cv::Scalar(255));
+    cv::line(input.edges.mask, {0, i}, {119, i}, cv::Scalar(255));
+  }
+  const GrowResult noisy = run_grow(input.edges, input.points);
+  EXPECT_GT(noisy.unassigned_ratio, 0.25);
+  ASSERT_EQ(noisy.warnings.size(), 1u);
+  EXPECT_NE(noisy.warnings[0].find("no patch"), std::string::npos) << noisy.warnings[0];
+  EXPECT_TRUE(
+      run_grow(input.edges, input.points, {{"max_unassigned_ratio", 1.0}}).warnings.empty());
+}
+
 TEST(GrowSurfaces, BoxFacesBecomeSeparateTouchingPatches) {
   SceneBuilder builder;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();

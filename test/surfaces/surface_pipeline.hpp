@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "edges/edges_avg.hpp"
 #include "edges/edges_max.hpp"
@@ -30,6 +31,7 @@ struct GrowResult {
   LabelImage patches;
   PatchAdjacency adjacency;
   double unassigned_ratio = -1.0;
+  std::vector<std::string> warnings;
 };
 
 inline GrowResult run_grow(const EdgeImage& edges, const PointImage& points,
@@ -44,6 +46,7 @@ inline GrowResult run_grow(const EdgeImage& edges, const PointImage& points,
   for (const auto& metric : runner.metrics()) {
     if (metric.name == "unassigned_ratio") result.unassigned_ratio = metric.value;
   }
+  result.warnings = runner.warnings();
   return result;
 }
 
