@@ -67,6 +67,7 @@ std::int32_t keep_blobs(EuclideanRegions& blobs, const std::vector<char>& keep) 
   for (std::size_t id = 1; id < keep.size(); ++id) {
     if (keep[id] != 0) new_id[id] = ++kept;
   }
+  if (kept == blobs.count) return 0;  // ids unchanged: no pass over the image
   auto* label = blobs.labels.ptr<std::int32_t>();
   const std::size_t total = blobs.labels.total();
   for (std::size_t i = 0; i < total; ++i)
