@@ -2,6 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <fstream>
+#include <iomanip>
+#include <limits>
 #include <string>
 
 #include "facet/error.hpp"
@@ -61,6 +64,17 @@ CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
     throw StageError(file.string() + ": fx, fy, width and height must all be positive");
   }
   return camera;
+}
+
+void write_intrinsics(const std::filesystem::path& file, const CameraIntrinsics& camera) {
+  std::ofstream out(file);
+  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  out << "# Pinhole intrinsics of the recorded frames (pixels), as io.frames reads them.\n"
+      << "fx: " << camera.fx << "\nfy: " << camera.fy << "\ncx: " << camera.cx
+      << "\ncy: " << camera.cy << "\nwidth: " << camera.width << "\nheight: " << camera.height
+      << "\n";
+  out.close();
+  if (!out) throw StageError("cannot write intrinsics file '" + file.string() + "'");
 }
 
 }  // namespace facet::io

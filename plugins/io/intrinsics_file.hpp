@@ -12,4 +12,8 @@ namespace facet::io {
 // is missing, is not YAML, lacks a key, or holds a value that is not a usable number.
 CameraIntrinsics read_intrinsics(const std::filesystem::path& file);
 
+// Writes the keys read_intrinsics reads, at full precision (a written file reads back exactly).
+// Throws facet::StageError naming the file when it cannot be written.
+void write_intrinsics(const std::filesystem::path& file, const CameraIntrinsics& camera);
+
 }  // namespace facet::io

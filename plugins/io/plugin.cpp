@@ -8,6 +8,7 @@
 #include "io/labels_sink.hpp"
 #include "io/objects_sink.hpp"
 #include "io/overlay_sink.hpp"
+#include "io/record_sink.hpp"
 
 FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::FramesSource>();
@@ -17,4 +18,5 @@ FACET_PLUGIN("facet_io", "0.1.0") {
   registrar.add<facet::io::ObjectsSink>();
   registrar.add<facet::io::OverlaySink>();
   registrar.add<facet::io::CloudSink>();
+  registrar.add<facet::io::RecordSink>();
 }

@@ -1,0 +1,71 @@
+#include "io/record_sink.hpp"
+
+#include <string>
+
+#include "facet/types/images.hpp"
+#include "io/dataset_images.hpp"
+#include "io/intrinsics_file.hpp"
+#include "io/output_folder.hpp"
+
+namespace facet::io {
+namespace {
+
+bool same_camera(const CameraIntrinsics& a, const CameraIntrinsics& b) {
+  return a.fx == b.fx && a.fy == b.fy && a.cx == b.cx && a.cy == b.cy && a.width == b.width &&
+         a.height == b.height;
+}
+
+}  // namespace
+
+StageSpec RecordSink::spec() {
+  return StageSpec(
+             "io.record",
+             "Records a depth stream in the dataset layout io.frames reads (docs/data-formats.md): "
+             "<dir>/intrinsics.yaml from the first frame, <dir>/depth/<stem>.png (16-bit mm, 0 = "
+             "invalid) and, when the labels input carries an image, <dir>/label/<stem>.png "
+             "(16-bit ids). Frames without a stem are named frame_<index>. Replaying the folder "
+             "with io.frames gives the same depth (to the millimetre), labels and intrinsics. "
+             "All frames must share one camera; a frame with other intrinsics is an error.")
+      .input<DepthImage>("depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m, with intrinsics.")
+      .optional_input<LabelImage>("labels",
+                                  "Ground truth (or any segment ids) to record "
+                                  "beside the depth; empty packets are skipped.")
+      .param("dir", "out/recording", "Dataset folder, created if missing.", {.required = true})
+      .concurrency(Concurrency::serial);
+}
+
+RecordSink::RecordSink(const Params& params) : dir_(params.get_string("dir")) {}
+
+void RecordSink::open(const OpenContext& /*ctx*/) {
+  ensure_folder(dir_ / "depth");
+  camera_.reset();
+  label_folder_ready_ = false;
+}
+
+void RecordSink::process(ProcessContext& ctx) {
+  const auto& depth = ctx.input<DepthImage>("depth");
+  const std::filesystem::path depth_file = frame_file(dir_ / "depth", depth.frame);
+  if (!camera_) {
+    write_intrinsics(dir_ / "intrinsics.yaml", depth.camera);
+    camera_ = depth.camera;
+  } else if (!same_camera(*camera_, depth.camera)) {
+    throw StageError("cannot record '" + depth_file.string() +
+                     "': its intrinsics differ from the first frame's, and a dataset folder "
+                     "holds one camera");
+  }
+  const std::int64_t out_of_range = write_depth_png(depth_file, depth.depth);
+  if (out_of_range > 0) {
+    ctx.warn(std::to_string(out_of_range) + " pixels beyond 65.535 m written as 0 in '" +
+             depth_file.string() + "'");
+  }
+  if (!ctx.has_input("labels")) return;
+  const auto& labels = ctx.input<LabelImage>("labels");
+  if (labels.labels.empty()) return;
+  if (!label_folder_ready_) {
+    ensure_folder(dir_ / "label");
+    label_folder_ready_ = true;
+  }
+  write_label_png(frame_file(dir_ / "label", depth.frame), labels.labels);
+}
+
+}  // namespace facet::io
