@@ -163,5 +163,17 @@ TEST(Run, EveryVariantOfTheAbGraphsIsValid) {
   }
 }
 
+// Every graph shipped in graphs/ validates against the bundled plugins.
+TEST(Run, EveryShippedGraphIsValid) {
+  int graphs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "graphs")) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++graphs;
+    const auto result = run_cli("validate " + shell_quote(entry.path().string()));
+    EXPECT_EQ(result.exit_code, 0) << entry.path().filename() << "\n" << result.out;
+  }
+  EXPECT_GE(graphs, 9);
+}
+
 }  // namespace
 }  // namespace facet::test
