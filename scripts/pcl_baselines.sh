@@ -4,7 +4,7 @@
 # labels against part-level ground truth with an external scorer (overlap P/R/F with one-to-one
 # IoU matching, over- and under-segmentation counts), plus the mean F per category when the
 # dataset has a frames.csv (frame,category,...). facet's graphs/tabletop.yaml runs in the same
-# session (three times, before the PCL pipelines) and is scored the same way, so that the ratios
+# sitting (three times, before the PCL pipelines) and is scored the same way, so that the ratios
 # of time and quality come from one run on one machine. Builds nothing: build facet and
 # facet_pcl_baselines first (the latter exists when CMake found PCL).
 #

@@ -1,6 +1,6 @@
 #pragma once
 // io.record: writes a depth stream, with its ground truth when there is one, in the dataset
-// layout that io.frames reads, so that a live session can be replayed exactly.
+// layout that io.frames reads, so that a live camera stream can be replayed exactly.
 
 #include <filesystem>
 #include <optional>

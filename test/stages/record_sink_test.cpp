@@ -56,7 +56,7 @@ TEST(RecordSink, RecordingReplaysExactly) {
   const std::vector<Frame> original = read_all(data_dir() / "mosd");
   ASSERT_GE(original.size(), 2u);
   TempDir dir("facet-record");
-  const auto recording = dir.path() / "session";
+  const auto recording = dir.path() / "recording";
   Recorder recorder({{"dir", ParamValue(recording.string())}});
   for (const Frame& frame : original) {
     recorder.set_input("depth", Packet::make(frame.depth));
