@@ -9,6 +9,7 @@
 #include "facet/stage.hpp"
 #include "facet/types/frame.hpp"
 #include "facet/types/images.hpp"
+#include "io/file_playback.hpp"
 #include "io/frame_listing.hpp"
 
 namespace facet::io {
@@ -26,8 +27,6 @@ class FramesSource final : public Stage {
   const CameraIntrinsics& camera() const { return camera_; }
 
  private:
-  enum class OnError { fail, skip };
-
   // Reads frame `index` of the listing; throws StageError naming the file when it is unusable.
   void read_frame(std::size_t index, DepthImage& depth, LabelImage& labels) const;
 
@@ -35,24 +34,14 @@ class FramesSource final : public Stage {
   std::string path_;
   std::string intrinsics_param_;
   std::string labels_dir_param_;
-  OnError on_error_;
-  std::int64_t start_;
-  std::int64_t stride_;
-  bool loop_;
-  double fps_hz_;
   double depth_scale_;  // depth PNG units per metre; 0 = the layout's convention
+  FilePlayback playback_;
 
   // Resolved by open().
   CameraIntrinsics camera_;
   FrameListing listing_;
-  std::vector<std::filesystem::path> schedule_;
-  std::vector<std::size_t> schedule_index_;  // per scheduled frame: its index in listing_
-  std::filesystem::path labels_dir_;         // empty when the dataset has no such folder
-
-  // Stream position.
-  std::size_t next_ = 0;
-  std::int64_t emitted_ = 0;
-  std::int64_t emitted_in_pass_ = 0;
+  std::vector<std::filesystem::path> schedule_;  // the depth files playback_ scheduled
+  std::filesystem::path labels_dir_;             // empty when the dataset has no such folder
 };
 
 }  // namespace facet::io

@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 #include <system_error>
 
+#include "io/file_playback.hpp"
 #include "io/frame_listing.hpp"
 #include "io/intrinsics_file.hpp"
 #include "io/natural_order.hpp"
@@ -76,24 +77,24 @@ std::vector<fs::path> list_pcd_files(const std::string& path) {
 }
 
 StageSpec PcdSource::spec() {
-  return StageSpec(
-             "io.pcd",
-             "Reads point clouds from PCD files (PCL's format) as depth frames and ground-truth "
-             "labels.\n"
-             "'path' is a folder of *.pcd files (read in natural order of their names: learn2 "
-             "before learn10), a glob such as DIR/learn*.pcd, or one file. Every encoding PCL "
-             "reads is accepted (ascii, binary, binary_compressed); the fields x, y, z (metres, "
-             "camera frame, z forward) are required, a 'label' field becomes the labels output. "
-             "Depth = round(z * 1000) mm; NaN, infinite and non-positive z are invalid (0). A "
-             "cloud whose points all have z < 0 is taken as stored with y and z negated and is "
-             "flipped back (with a warning). An organized cloud (height > 1) gives pixel (u, v) "
-             "the point v * width + u. Intrinsics: from 'intrinsics' or fx, fy, cx, cy when "
-             "given, otherwise fitted per frame by least squares of u = fx * x / z + cx and "
-             "v = fy * y / z + cy over the valid points (metric fit_rms_px). An unorganized "
-             "cloud (height 1) is re-projected with the given intrinsics (the nearest point wins "
-             "a pixel) and refused without them. Ends the stream after the last file unless "
-             "'loop' is set. Reports the metric valid_ratio (valid pixels / all).")
-      .output<DepthImage>("depth",
+  StageSpec spec(
+      "io.pcd",
+      "Reads point clouds from PCD files (PCL's format) as depth frames and ground-truth "
+      "labels.\n"
+      "'path' is a folder of *.pcd files (read in natural order of their names: learn2 "
+      "before learn10), a glob such as DIR/learn*.pcd, or one file. Every encoding PCL "
+      "reads is accepted (ascii, binary, binary_compressed); the fields x, y, z (metres, "
+      "camera frame, z forward) are required, a 'label' field becomes the labels output. "
+      "Depth = round(z * 1000) mm; NaN, infinite and non-positive z are invalid (0). A "
+      "cloud whose points all have z < 0 is taken as stored with y and z negated and is "
+      "flipped back (with a warning). An organized cloud (height > 1) gives pixel (u, v) "
+      "the point v * width + u. Intrinsics: from 'intrinsics' or fx, fy, cx, cy when "
+      "given, otherwise fitted per frame by least squares of u = fx * x / z + cx and "
+      "v = fy * y / z + cy over the valid points (metric fit_rms_px). An unorganized "
+      "cloud (height 1) is re-projected with the given intrinsics (the nearest point wins "
+      "a pixel) and refused without them. Ends the stream after the last file unless "
+      "'loop' is set. Reports the metric valid_ratio (valid pixels / all).");
+  spec.output<DepthImage>("depth",
                           "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
                           "file stem, timestamp and camera intrinsics.")
       .output<LabelImage>("labels",
@@ -126,35 +127,19 @@ StageSpec PcdSource::spec() {
              "mosd_parts gives every mOSD part (value >= 20) its own id.",
              {.choices = {std::string("raw"), std::string("mosd"), std::string("mosd_parts")},
               .origin = "raw: the file's own ids"})
-      .param("on_error", "fail",
-             "What to do with an unusable file (unreadable, no x/y/z, intrinsics not fittable): "
-             "fail stops the run with an error naming the file; skip warns and goes on.",
-             {.choices = {std::string("fail"), std::string("skip")},
-              .origin = "fail: a damaged recording should not pass unnoticed"})
-      .param("start", 0, "Index of the first file, in natural order.",
-             {.unit = "frames", .min = 0.0})
-      .param("stride", 1, "Read every stride-th file from start on.",
-             {.unit = "frames", .min = 1.0})
-      .param("loop", false, "Start again from 'start' after the last file instead of ending.")
-      .param("fps", 30.0,
-             "Nominal frame rate; timestamps are frame index / fps (PCD files carry no time "
-             "stamp).",
-             {.unit = "Hz",
-              .min = 0.001,
-              .max = 10000.0,
-              .origin = "the 30 Hz of Kinect-type and Xtion depth cameras"})
       .concurrency(Concurrency::serial);
+  io::FilePlayback::declare_params(spec,
+                                   {.item = "file",
+                                    .unusable = "unreadable, no x/y/z, intrinsics not fittable",
+                                    .timestamp_note = "PCD files carry no time stamp"});
+  return spec;
 }
 
 PcdSource::PcdSource(const Params& params)
     : path_(params.get_string("path")),
       intrinsics_param_(params.get_string("intrinsics")),
       scheme_(label_scheme(params.get_string("labels"))),
-      on_error_(params.get_string("on_error") == "skip" ? OnError::skip : OnError::fail),
-      start_(params.get_int("start")),
-      stride_(params.get_int("stride")),
-      loop_(params.get_bool("loop")),
-      fps_hz_(params.get_double("fps")) {
+      playback_(params) {
   given_.fx = params.get_double("fx");
   given_.fy = params.get_double("fy");
   given_.cx = params.get_double("cx");
@@ -164,7 +149,7 @@ PcdSource::PcdSource(const Params& params)
 }
 
 void PcdSource::open(const OpenContext& /*ctx*/) {
-  const std::vector<fs::path> files = list_pcd_files(path_);
+  files_ = list_pcd_files(path_);
   const bool focal_given = given_.fx > 0.0 || given_.fy > 0.0;
   if (!intrinsics_param_.empty() && focal_given) {
     throw StageError("set either param 'intrinsics' or params fx, fy, cx, cy, not both");
@@ -175,31 +160,17 @@ void PcdSource::open(const OpenContext& /*ctx*/) {
   have_camera_ = !intrinsics_param_.empty() || focal_given;
   camera_ = intrinsics_param_.empty() ? given_ : io::read_intrinsics(intrinsics_param_);
 
-  const auto count = static_cast<std::int64_t>(files.size());
-  if (start_ >= count) {
-    throw StageError("param start=" + std::to_string(start_) + " but '" + path_ + "' has only " +
-                     std::to_string(count) + " files");
-  }
-  schedule_.clear();
-  for (std::int64_t i = start_; i < count; i += stride_)
-    schedule_.push_back(files[static_cast<std::size_t>(i)]);
-  next_ = 0;
-  emitted_ = 0;
-  emitted_in_pass_ = 0;
+  playback_.schedule(files_.size(), path_, "files");
 }
 
 void PcdSource::process(ProcessContext& ctx) {
   while (true) {
-    if (next_ >= schedule_.size()) {
-      // A pass in which every file was skipped would loop forever: end instead.
-      if (!loop_ || emitted_in_pass_ == 0) {
-        ctx.end_of_stream();
-        return;
-      }
-      next_ = 0;
-      emitted_in_pass_ = 0;
+    const std::optional<std::size_t> next = playback_.next();
+    if (!next) {
+      ctx.end_of_stream();
+      return;
     }
-    const fs::path& file = schedule_[next_++];
+    const fs::path& file = files_[*next];
     std::string what = "'";  // (built by appending: GCC 12 warns about "'" + string)
     what += file.string();
     what += '\'';
@@ -239,17 +210,16 @@ void PcdSource::process(ProcessContext& ctx) {
         images = projected_images(cloud, camera);
       }
     } catch (const StageError& error) {
-      if (on_error_ == OnError::fail) throw;
-      ctx.warn(std::string("skipped frame: ") + error.what());
+      if (!playback_.skips_unusable()) throw;
+      io::FilePlayback::warn_skipped(ctx, error);
       continue;
     }
 
     FrameHeader header;
     header.camera = camera;
-    header.frame.index = emitted_;
+    header.frame.index = playback_.frame_index();
     header.frame.stem = file.stem().string();
-    header.frame.timestamp_ns =
-        static_cast<std::int64_t>(static_cast<double>(emitted_) * 1e9 / fps_hz_);
+    header.frame.timestamp_ns = playback_.nominal_timestamp_ns();
     if (images.out_of_range > 0) {
       ctx.warn(what + ": " + std::to_string(images.out_of_range) +
                " points beyond 65.535 m left out (depth is 16-bit mm)");
@@ -262,8 +232,7 @@ void PcdSource::process(ProcessContext& ctx) {
       ctx.output("labels", std::move(labels));
     }
     ctx.output("depth", DepthImage{header, std::move(images.depth)});
-    ++emitted_;
-    ++emitted_in_pass_;
+    playback_.emitted();
     return;
   }
 }

@@ -10,6 +10,7 @@
 #include "facet/stage.hpp"
 #include "facet/types/frame.hpp"
 #include "facet/types/images.hpp"
+#include "io/file_playback.hpp"
 #include "pcd/cloud_images.hpp"
 
 namespace facet::pcd {
@@ -26,31 +27,18 @@ class PcdSource final : public Stage {
   void open(const OpenContext& ctx) override;
   void process(ProcessContext& ctx) override;
 
-  const std::vector<std::filesystem::path>& scheduled_files() const { return schedule_; }
-
  private:
-  enum class OnError { fail, skip };
-
   // Parameters.
   std::string path_;
   std::string intrinsics_param_;
   CameraIntrinsics given_;  // from fx, fy, cx, cy, width, height (zeros when not given)
   LabelScheme scheme_;
-  OnError on_error_;
-  std::int64_t start_;
-  std::int64_t stride_;
-  bool loop_;
-  double fps_hz_;
+  io::FilePlayback playback_;
 
   // Resolved by open().
-  bool have_camera_ = false;  // false: fit the intrinsics of every frame
+  std::vector<std::filesystem::path> files_;  // in natural order
+  bool have_camera_ = false;                  // false: fit the intrinsics of every frame
   CameraIntrinsics camera_;
-  std::vector<std::filesystem::path> schedule_;
-
-  // Stream position.
-  std::size_t next_ = 0;
-  std::int64_t emitted_ = 0;
-  std::int64_t emitted_in_pass_ = 0;
 };
 
 }  // namespace facet::pcd
