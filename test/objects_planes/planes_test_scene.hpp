@@ -3,12 +3,10 @@
 // boxes placed on it, and "perfect" surface patches taken from the renderer's face ids (so these
 // tests do not depend on the normal, edge and region-growing stages).
 
-#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <numbers>
 #include <string>
 
 #include "blobs/grow_blobs.hpp"
@@ -17,35 +15,11 @@
 #include "facet/types/images.hpp"
 #include "planes/support_planes.hpp"
 #include "synthetic_scene.hpp"
+#include "tabletop_frame.hpp"
 
 namespace facet::test {
 
 using Overrides = std::map<std::string, ParamValue>;
-
-// World directions in the camera frame for a camera pitched down by 40 degrees; the table plane
-// passes through table_point (1 m along the optical axis).
-struct TabletopFrame {
-  double pitch_rad = 40.0 * std::numbers::pi / 180.0;
-  Eigen::Vector3d up{0.0, -std::cos(pitch_rad), -std::sin(pitch_rad)};
-  Eigen::Vector3d forward{0.0, -std::sin(pitch_rad), std::cos(pitch_rad)};
-  Eigen::Vector3d right{1.0, 0.0, 0.0};
-  Eigen::Vector3d table_point{0.0, 0.0, 1.0};
-
-  // A pose at (x right, y forward) on the table, lifted by `height_m` along up.
-  Eigen::Isometry3d on_table(double x_m, double y_m, double height_m) const {
-    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-    pose.linear().col(0) = right;
-    pose.linear().col(1) = forward;
-    pose.linear().col(2) = up;
-    pose.translation() = table_point + x_m * right + y_m * forward + height_m * up;
-    return pose;
-  }
-  // A box of half extents `half_m` standing on the table at (x, y).
-  SceneBuilder& box_on_table(SceneBuilder& scene, double x_m, double y_m,
-                             const Eigen::Vector3d& half_m) const {
-    return scene.box(on_table(x_m, y_m, half_m.z()), half_m);
-  }
-};
 
 inline PointImage scene_points(const RenderedScene& scene, double max_depth_m = 4.0) {
   PointImage out;

@@ -12,12 +12,12 @@
 namespace facet::test {
 namespace {
 
-const TableFrame kTable;
+const TabletopFrame kTable;
 
 // The control: a table with three boxes, which the pipeline finds as three objects.
 RenderedScene table_with_boxes() {
   SceneBuilder scene;
-  scene.plane(kTable.point, kTable.up);
+  scene.plane(kTable.table_point, kTable.up);
   kTable.box_on_table(scene, -0.25, 0.05, {0.10, 0.08, 0.12});
   kTable.box_on_table(scene, 0.05, 0.10, {0.05, 0.05, 0.06});
   kTable.box_on_table(scene, 0.25, -0.05, {0.04, 0.06, 0.10});
@@ -148,7 +148,7 @@ TEST(TabletopBadInput, NoTableLeavesTheObjects) {
 // object holding nearly all of the box, not a wall, not fragments.
 TEST(TabletopBadInput, OneHugeBlob) {
   SceneBuilder builder;
-  builder.plane(kTable.point, kTable.up);
+  builder.plane(kTable.table_point, kTable.up);
   kTable.box_on_table(builder, 0.0, 0.12, {0.5, 0.25, 0.2});
   const RenderedScene scene = builder.render();
   const auto box_px = pixels_per_object(scene.object, 2)[2];
@@ -180,10 +180,10 @@ TEST(TabletopBadInput, OneHugeBlob) {
 // enough pixels outside the normal-edge bands (grow.surfaces min_size_px): every box of 800
 // pixels or more is, the smallest are not (README.md, "Bad input"). None merges with another.
 TEST(TabletopBadInput, TwoHundredTinyObjects) {
-  TableFrame near(50.0);
-  near.point = {0.0, 0.0, 0.6};
+  TabletopFrame near(50.0);
+  near.table_point = {0.0, 0.0, 0.6};
   SceneBuilder table;
-  table.plane(near.point, near.up);
+  table.plane(near.table_point, near.up);
   RenderedScene scene = table.render();
   const Eigen::Vector3d half(0.0125, 0.0125, 0.0175);
   const double step_m = 0.037;
