@@ -50,6 +50,14 @@ std::int64_t write_depth_png(const std::filesystem::path& file, const cv::Mat& d
   return converted.out_of_range;
 }
 
+void write_depth_png(ProcessContext& ctx, const std::filesystem::path& file, const cv::Mat& depth) {
+  const std::int64_t out_of_range = write_depth_png(file, depth);
+  if (out_of_range > 0) {
+    ctx.warn(std::to_string(out_of_range) + " pixels beyond 65.535 m written as 0 in '" +
+             file.string() + "'");
+  }
+}
+
 void write_label_png(const std::filesystem::path& file, const cv::Mat& labels) {
   if (labels.channels() != 1 ||
       (labels.depth() != CV_32S && labels.depth() != CV_16U && labels.depth() != CV_8U)) {

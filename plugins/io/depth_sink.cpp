@@ -1,13 +1,11 @@
 #include "io/depth_sink.hpp"
 
-#include <cstdint>
-#include <string>
-
 #include "facet/types/images.hpp"
 #include "io/dataset_images.hpp"
 #include "io/output_folder.hpp"
 
 namespace facet::io {
+
 StageSpec DepthSink::spec() {
   return StageSpec("io.depth",
                    "Writes depth images as <dir>/<stem>.png, 16-bit millimetres, 0 = invalid.\n"
@@ -26,12 +24,7 @@ void DepthSink::open(const OpenContext& /*ctx*/) {
 
 void DepthSink::process(ProcessContext& ctx) {
   const auto& input = ctx.input<DepthImage>("depth");
-  const std::filesystem::path file = frame_file(dir_, input.frame);
-  const std::int64_t out_of_range = write_depth_png(file, input.depth);
-  if (out_of_range > 0) {
-    ctx.warn(std::to_string(out_of_range) + " pixels beyond 65.535 m written as 0 in '" +
-             file.string() + "'");
-  }
+  write_depth_png(ctx, frame_file(dir_, input.frame), input.depth);
 }
 
 }  // namespace facet::io

@@ -5,6 +5,7 @@
 #include "io/output_folder.hpp"
 
 namespace facet::io {
+
 StageSpec LabelsSink::spec() {
   return StageSpec("io.labels",
                    "Writes label images as <dir>/<stem>.png, 16-bit, 0 = background.\n"

@@ -8,14 +8,6 @@
 #include "io/output_folder.hpp"
 
 namespace facet::io {
-namespace {
-
-bool same_camera(const CameraIntrinsics& a, const CameraIntrinsics& b) {
-  return a.fx == b.fx && a.fy == b.fy && a.cx == b.cx && a.cy == b.cy && a.width == b.width &&
-         a.height == b.height;
-}
-
-}  // namespace
 
 StageSpec RecordSink::spec() {
   return StageSpec(
@@ -48,16 +40,12 @@ void RecordSink::process(ProcessContext& ctx) {
   if (!camera_) {
     write_intrinsics(dir_ / "intrinsics.yaml", depth.camera);
     camera_ = depth.camera;
-  } else if (!same_camera(*camera_, depth.camera)) {
+  } else if (*camera_ != depth.camera) {
     throw StageError("cannot record '" + depth_file.string() +
                      "': its intrinsics differ from the first frame's, and a dataset folder "
                      "holds one camera");
   }
-  const std::int64_t out_of_range = write_depth_png(depth_file, depth.depth);
-  if (out_of_range > 0) {
-    ctx.warn(std::to_string(out_of_range) + " pixels beyond 65.535 m written as 0 in '" +
-             depth_file.string() + "'");
-  }
+  write_depth_png(ctx, depth_file, depth.depth);
   if (!ctx.has_input("labels")) return;
   const auto& labels = ctx.input<LabelImage>("labels");
   if (labels.labels.empty()) return;

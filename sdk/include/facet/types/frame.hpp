@@ -18,6 +18,7 @@ struct CameraIntrinsics {
   int height = 0;
 
   bool valid() const { return fx > 0.0 && fy > 0.0 && width > 0 && height > 0; }
+  bool operator==(const CameraIntrinsics&) const = default;
 };
 
 struct FrameInfo {
