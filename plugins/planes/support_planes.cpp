@@ -226,8 +226,7 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
   support_rule_.min_object_fraction = params.get_double("min_object_fraction");
   support_rule_.max_support_behind_fraction = params.get_double("max_support_behind_fraction");
   support_rule_.large_view_fraction = params.get_double("large_view_fraction");
-  support_rule_.min_cos_horizontal =
-      std::cos(params.get_double("horizontal_max_deg") * std::numbers::pi / 180.0);
+  support_rule_.min_cos_horizontal = std::cos(horizontal_max_deg_ * std::numbers::pi / 180.0);
   support_rule_.sample_stride_px = static_cast<int>(params.get_int("sample_stride_px"));
   try {
     up_ = parse_up(params.get_string("up"));
@@ -374,7 +373,6 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     }
   }
 
-  const double min_cos_horizontal = std::cos(horizontal_max_deg_ * std::numbers::pi / 180.0);
   for (std::size_t c = 0; c < accepted.size(); ++c) {
     Plane plane;
     plane.id = static_cast<std::int32_t>(c + 1);
@@ -383,7 +381,7 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     plane.inliers = inliers[c];
     plane.rms_m =
         inliers[c] > 0 ? std::sqrt(squared_sum[c] / static_cast<double>(inliers[c])) : 0.0;
-    plane.horizontal = plane.normal.dot(planes.up) >= min_cos_horizontal;
+    plane.horizontal = plane.normal.dot(planes.up) >= support_rule_.min_cos_horizontal;
     planes.planes.push_back(plane);
   }
 
