@@ -41,15 +41,7 @@ score() {
   /usr/bin/python3 "$scorer" --gt "$dataset/label_parts" --gt-name '*.png' \
     --pred "$2" --pred-name '*.png' --json "$3" | grep -E '^ALL'
   if [[ -f "$dataset/frames.csv" ]]; then
-    /usr/bin/python3 - "$dataset/frames.csv" "$3" <<'EOF'
-import csv, json, sys
-category = {row["frame"]: row["category"] for row in csv.DictReader(open(sys.argv[1]))}
-per = {}
-for image in json.load(open(sys.argv[2]))["overlap"]["images"]:
-    per.setdefault(category.get(image["key"], "?"), []).append(image["f_measure"])
-print("F per category: " + ", ".join(
-    f"{name} ({len(f)}) {sum(f) / len(f):.3f}" for name, f in sorted(per.items())))
-EOF
+    /usr/bin/python3 "$here/scripts/category_scores.py" "$3" "$dataset/frames.csv"
   fi
 }
 score facet "$out/facet/labels" "$out/facet/score.json"

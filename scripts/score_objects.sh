@@ -28,20 +28,6 @@ for variant in default "${variants[@]}"; do
   /usr/bin/python3 "$scorer" --gt "$dataset/label_parts" --gt-name '*.png' \
     --pred "$out/$variant/labels" --pred-name '*.png' --per-image \
     --json "$out/$variant/score.json" >/dev/null
-  /usr/bin/python3 - "$out/$variant/score.json" "$dataset/frames.csv" "$variant" <<'PY'
-import csv, json, os, sys
-from collections import defaultdict
-score, frames, variant = sys.argv[1:4]
-overlap = json.load(open(score))["overlap"]
-category = {row["frame"]: row["category"] for row in csv.DictReader(open(frames))}
-per_category = defaultdict(list)
-for image in overlap["images"]:
-    stem = os.path.splitext(os.path.basename(image["key"]))[0]
-    per_category[category.get(stem, "?")].append(image["f_measure"])
-o = overlap["overall"]
-cats = ", ".join(f"{c} ({len(v)}) {sum(v) / len(v):.3f}" for c, v in sorted(per_category.items()))
-print(f"| {variant} | {100 * o['precision']:.1f} | {100 * o['recall']:.1f} | "
-      f"**{o['f_measure']:.3f}** | {o['objects_segmented_pct']:.1f} | {o['over_segmented']} | "
-      f"{o['under_segmenting']} | {o['merged_objects']} | {cats} |")
-PY
+  /usr/bin/python3 "$here/scripts/category_scores.py" "$out/$variant/score.json" \
+    "$dataset/frames.csv" --row "$variant"
 done
