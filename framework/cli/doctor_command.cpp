@@ -1,6 +1,9 @@
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -10,11 +13,42 @@
 #include "session.hpp"
 
 namespace facet::cli {
+namespace {
+
+// The text of one plugin section; a section that throws prints its message instead, so one
+// broken driver stack never hides the rest of the report.
+std::string section_text(const DiagnosticSection& section) {
+  try {
+    return section.report ? section.report() : std::string("(no report)");
+  } catch (const std::exception& error) {
+    return std::string("error: ") + error.what();
+  } catch (...) {
+    return "error: unknown exception";
+  }
+}
+
+void print_plugin_sections(const Registry& registry, std::ostream& out) {
+  for (const auto& entry : registry.diagnostics()) {
+    out << "\n" << entry.section.title << " (from plugin " << entry.plugin->name << "):\n";
+    std::istringstream lines(section_text(entry.section));
+    std::string line;
+    bool any = false;
+    while (std::getline(lines, line)) {
+      out << "  " << line << "\n";
+      any = true;
+    }
+    if (!any) out << "  (nothing to report)\n";
+  }
+}
+
+}  // namespace
 
 void add_doctor_command(CLI::App& app, int& exit_code) {
   auto plugins = std::make_shared<PluginOptions>();
   CLI::App* command = app.add_subcommand(
-      "doctor", "Show plugin search paths, plugins found, load failures and ABI fingerprints");
+      "doctor",
+      "Show plugin search paths, plugins found, load failures, ABI fingerprints and what "
+      "plugins report of their drivers and devices");
   add_plugin_options(*command, *plugins);
   command->callback([plugins, &exit_code] {
     std::cout << "facet " << FACET_SDK_VERSION_STRING << "\n";
@@ -48,6 +82,7 @@ void add_doctor_command(CLI::App& app, int& exit_code) {
     for (const auto& failure : registry.failures()) {
       std::cout << "  " << failure.file.string() << "\n      " << failure.reason << "\n";
     }
+    print_plugin_sections(registry, std::cout);
     exit_code = registry.failures().empty() ? kOk : kPluginFailure;
   });
 }

@@ -72,7 +72,8 @@ class LoadAttempt {
     if (header == nullptr) return fail("'" FACET_PLUGIN_ENTRY_NAME "' returned no header");
     if (auto refused = detail::check_plugin_header(*header)) return fail(*refused);
 
-    // Only now is the plugin's C++ trusted enough to be called.
+    // Only now is the plugin's C++ trusted enough to be called. `stages` also collects the
+    // plugin's `facet doctor` sections.
     StageList stages;
     try {
       header->register_stages(static_cast<Registrar*>(&stages));
@@ -92,7 +93,7 @@ class LoadAttempt {
       info->stages.push_back(spec.name());
     // Every stage entry holds the library, so the plugin outlives the instances it creates.
     std::shared_ptr<const void> pin = std::move(opened.library);
-    registry_.add_plugin(std::move(info), stages.stages(), std::move(pin));
+    registry_.add_plugin(std::move(info), stages.stages(), std::move(pin), stages.diagnostics());
     return true;
   }
 

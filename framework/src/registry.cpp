@@ -7,8 +7,8 @@
 namespace facet {
 
 void Registry::add_plugin(std::shared_ptr<const PluginInfo> plugin,
-                          const std::vector<StageSpec>& stages,
-                          std::shared_ptr<const void> library) {
+                          const std::vector<StageSpec>& stages, std::shared_ptr<const void> library,
+                          const std::vector<DiagnosticSection>& diagnostics) {
   for (const auto& spec : stages) {
     const auto it = stages_.find(spec.name());
     if (it != stages_.end()) {
@@ -23,6 +23,8 @@ void Registry::add_plugin(std::shared_ptr<const PluginInfo> plugin,
     }
     stages_.emplace(spec.name(), StageEntry{library, spec, plugin});
   }
+  for (const auto& section : diagnostics)
+    diagnostics_.push_back({library, section, plugin});
   plugins_.push_back(std::move(plugin));
 }
 

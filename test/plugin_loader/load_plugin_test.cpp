@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <stdexcept>
+#include <string>
 
 #include "facet/framework/plugin_loader.hpp"
 #include "facet/types/images.hpp"
@@ -78,6 +80,30 @@ TEST(LoadPlugin, StageFromAPluginRunsAndOutlivesTheRegistry) {
   EXPECT_EQ(image->depth.at<std::uint16_t>(1, 2), 7);
 }
 
+TEST(LoadPlugin, GoodPluginContributesItsDoctorSectionsInOrder) {
+  Registry registry;
+  ASSERT_TRUE(load_plugin(test::test_plugin_file("good"), registry))
+      << test::describe_failures(registry);
+  const auto& sections = registry.diagnostics();
+  ASSERT_EQ(sections.size(), 2u);
+  EXPECT_EQ(sections[0].section.title, "Test sensor");
+  EXPECT_EQ(sections[1].section.title, "Test bus");
+  for (const auto& entry : sections) {
+    EXPECT_EQ(entry.plugin->name, "good");
+    EXPECT_NE(entry.library, nullptr) << "a section's code lives in its plugin: it must pin it";
+    ASSERT_TRUE(static_cast<bool>(entry.section.report));
+  }
+  // The reports run in the host, with the plugin's code, when asked (not at load).
+  EXPECT_THAT(sections[0].section.report(), HasSubstr("test://0"));
+  EXPECT_THROW(sections[1].section.report(), std::runtime_error);
+}
+
+TEST(LoadPlugin, AFailedPluginContributesNoDoctorSection) {
+  Registry registry;
+  EXPECT_FALSE(load_plugin(test::test_plugin_file("throwing"), registry));
+  EXPECT_TRUE(registry.diagnostics().empty());
+}
+
 TEST(LoadPlugin, LoadingTheSameFileTwiceReportsTheStageConflict) {
   Registry registry;
   const auto file = test::test_plugin_file("good");
@@ -104,7 +130,8 @@ TEST(LoadPlugin, WrongAbiVersionIsRefusedBeforeRegistration) {
   // The broken plugins with a hand-written header abort in register_stages: reaching this
   // assertion at all shows that their C++ was never called.
   EXPECT_EQ(failure_reason_of_case("wrong_abi"),
-            "ABI version mismatch: plugin has 999, host expects 1");
+            "ABI version mismatch: plugin has 999, host expects " +
+                std::to_string(FACET_PLUGIN_ABI_VERSION));
 }
 
 TEST(LoadPlugin, WrongMagicIsRefused) {

@@ -7,7 +7,12 @@
 //
 // The macro exports the single C entry symbol (see plugin_abi.h) with this SDK's version and
 // toolchain fingerprint; the host checks them before it runs the block.
+//
+// A plugin that talks to hardware or system libraries may also add a section to `facet doctor`:
+//
+//   registrar.add_diagnostic("OpenNI2", [] { return list_drivers_and_devices(); });
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -19,6 +24,18 @@
 
 namespace facet {
 
+// Produces the text of one `facet doctor` section. Called only by `facet doctor`, never while
+// plugins load, so probing devices or drivers costs nothing in `facet run`. May throw: the host
+// prints the message in the section instead.
+using DiagnosticReport = std::function<std::string()>;
+
+struct DiagnosticSection {
+  std::string title;  // e.g. "OpenNI2"
+  DiagnosticReport report;
+};
+
+// What a plugin's FACET_PLUGIN block talks to. Its virtual functions are part of the plugin ABI
+// (FACET_PLUGIN_ABI_VERSION): a function is only ever appended, and the version bumped.
 class Registrar {
  public:
   virtual ~Registrar() = default;
@@ -33,16 +50,26 @@ class Registrar {
   }
 
   virtual void add_stage(StageSpec spec) = 0;
+
+  // Adds a section titled `title` to `facet doctor` (since plugin ABI 2). `report` runs in the
+  // host, with the plugin loaded, each time doctor prints.
+  virtual void add_diagnostic(std::string title, DiagnosticReport report) = 0;
 };
 
-// Collects stages in memory: used by StageRunner and tests that need no plugin file.
+// Collects stages and diagnostic sections in memory: used by the plugin loader, StageRunner and
+// tests that need no plugin file.
 class StageList final : public Registrar {
  public:
   void add_stage(StageSpec spec) override { stages_.push_back(std::move(spec)); }
+  void add_diagnostic(std::string title, DiagnosticReport report) override {
+    diagnostics_.push_back({std::move(title), std::move(report)});
+  }
   const std::vector<StageSpec>& stages() const { return stages_; }
+  const std::vector<DiagnosticSection>& diagnostics() const { return diagnostics_; }
 
  private:
   std::vector<StageSpec> stages_;
+  std::vector<DiagnosticSection> diagnostics_;
 };
 
 }  // namespace facet

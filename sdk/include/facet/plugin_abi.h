@@ -15,8 +15,11 @@ extern "C" {
 
 /* "FCET" read as a little-endian 32-bit integer. */
 #define FACET_PLUGIN_MAGIC 0x54454346u
-/* Bumped whenever the layout of facet_plugin_header or the meaning of register_stages changes. */
-#define FACET_PLUGIN_ABI_VERSION 1u
+/* Bumped whenever the layout of facet_plugin_header or the meaning of register_stages changes,
+ * which includes the virtual functions of facet::Registrar that register_stages calls.
+ *   1: Registrar::add_stage
+ *   2: Registrar::add_diagnostic appended (sections of `facet doctor`) */
+#define FACET_PLUGIN_ABI_VERSION 2u
 #define FACET_PLUGIN_ENTRY_NAME "facet_plugin_entry"
 
 typedef struct facet_plugin_header {

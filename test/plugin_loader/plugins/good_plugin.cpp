@@ -1,8 +1,11 @@
-// A well-formed plugin with one stage; FACET_TEST_STAGE_NAME lets a second build of this file
-// claim the same stage name, to test conflicts between plugins.
+// A well-formed plugin with one stage and two `facet doctor` sections (one of which fails, as a
+// driver stack that cannot be queried would); FACET_TEST_STAGE_NAME lets a second build of this
+// file claim the same stage name, to test conflicts between plugins.
 
 #include <facet/plugin.hpp>
 #include <facet/types/images.hpp>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -30,4 +33,9 @@ class ConstantDepth final : public facet::Stage {
 
 FACET_PLUGIN(FACET_TEST_PLUGIN_NAME, "1.2.3") {
   registrar.add<ConstantDepth>();
+  registrar.add_diagnostic("Test sensor", [] {
+    return std::string("driver: constant 1.0\ndevices: test://0 (Constant, facet)");
+  });
+  registrar.add_diagnostic("Test bus",
+                           []() -> std::string { throw std::runtime_error("bus not powered"); });
 }

@@ -18,7 +18,7 @@ struct PluginInfo {
   std::filesystem::path file;  // empty for stages registered in-process
   std::string name;
   std::string version;
-  std::string sdk_version;  // "0.1.0"
+  std::string sdk_version;  // "0.2.0"
   std::string toolchain;    // fingerprint the plugin was built with
   std::vector<std::string> stages;
 };
@@ -37,12 +37,22 @@ struct StageEntry {
   std::shared_ptr<const PluginInfo> plugin;
 };
 
+// A section a plugin contributes to `facet doctor` (Registrar::add_diagnostic).
+struct DiagnosticEntry {
+  // Keeps the plugin loaded while `report`, whose code lives in it, can still be called.
+  std::shared_ptr<const void> library;
+  DiagnosticSection section;
+  std::shared_ptr<const PluginInfo> plugin;
+};
+
 class Registry {
  public:
-  // Registers every stage of `stages` as coming from `plugin`. A stage name that is already
-  // registered is not replaced: a LoadFailure naming both plugin files is recorded instead.
+  // Registers every stage of `stages` and every diagnostic section of `diagnostics` as coming
+  // from `plugin`. A stage name that is already registered is not replaced: a LoadFailure naming
+  // both plugin files is recorded instead.
   void add_plugin(std::shared_ptr<const PluginInfo> plugin, const std::vector<StageSpec>& stages,
-                  std::shared_ptr<const void> library);
+                  std::shared_ptr<const void> library,
+                  const std::vector<DiagnosticSection>& diagnostics = {});
 
   // In-process registration, for tests and embedders: plugin name "builtin".
   template <class StageT>
@@ -59,11 +69,14 @@ class Registry {
   std::vector<std::string> stage_names() const;  // sorted
   const std::vector<std::shared_ptr<const PluginInfo>>& plugins() const { return plugins_; }
   const std::vector<LoadFailure>& failures() const { return failures_; }
+  // In the order the plugins were loaded, and within a plugin in the order it added them.
+  const std::vector<DiagnosticEntry>& diagnostics() const { return diagnostics_; }
 
  private:
   std::map<std::string, StageEntry, std::less<>> stages_;
   std::vector<std::shared_ptr<const PluginInfo>> plugins_;
   std::vector<LoadFailure> failures_;
+  std::vector<DiagnosticEntry> diagnostics_;
 };
 
 }  // namespace facet
