@@ -168,6 +168,11 @@ TEST(Run, EveryShippedGraphIsValid) {
   int graphs = 0;
   for (const auto& entry : std::filesystem::directory_iterator(source_dir() / "graphs")) {
     if (entry.path().extension() != ".yaml") continue;
+#if !defined(FACET_HAVE_OPENNI2) || !defined(FACET_HAVE_VIEW)
+    // live.yaml needs the optional openni2 and view plugins, not built without OpenNI2 or
+    // OpenCV's highgui.
+    if (entry.path().filename() == "live.yaml") continue;
+#endif
     ++graphs;
     const auto result = run_cli("validate " + shell_quote(entry.path().string()));
     EXPECT_EQ(result.exit_code, 0) << entry.path().filename() << "\n" << result.out;

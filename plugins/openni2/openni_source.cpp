@@ -1,0 +1,382 @@
+#include "openni2/openni_source.hpp"
+
+#include <OpenNI.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "facet/types/images.hpp"
+#include "openni2/openni_runtime.hpp"
+
+namespace fs = std::filesystem;
+
+namespace facet::openni2 {
+namespace {
+
+std::string pixel_format_name(openni::PixelFormat format) {
+  switch (format) {
+    case openni::PIXEL_FORMAT_DEPTH_1_MM:
+      return "1 mm";
+    case openni::PIXEL_FORMAT_DEPTH_100_UM:
+      return "100 um";
+    case openni::PIXEL_FORMAT_SHIFT_9_2:
+      return "shift 9.2";
+    case openni::PIXEL_FORMAT_SHIFT_9_3:
+      return "shift 9.3";
+    default:
+      return "pixel format " + std::to_string(static_cast<int>(format));
+  }
+}
+
+DepthMode to_depth_mode(const openni::VideoMode& mode) {
+  return {mode.getResolutionX(), mode.getResolutionY(), mode.getFps(),
+          pixel_format_name(mode.getPixelFormat()),
+          mode.getPixelFormat() == openni::PIXEL_FORMAT_DEPTH_1_MM};
+}
+
+openni::VideoMode to_video_mode(const DepthMode& mode) {
+  openni::VideoMode video;
+  video.setResolution(mode.width_px, mode.height_px);
+  video.setFps(mode.fps);
+  video.setPixelFormat(openni::PIXEL_FORMAT_DEPTH_1_MM);
+  return video;
+}
+
+bool ends_with_oni(const std::string& uri) {
+  if (uri.size() < 4) return false;
+  std::string ext = uri.substr(uri.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".oni";
+}
+
+std::string frame_stem(std::int64_t index) {
+  char stem[32];
+  std::snprintf(stem, sizeof(stem), "frame_%06lld", static_cast<long long>(index));
+  return stem;
+}
+
+constexpr std::chrono::milliseconds kStopGrace{100};
+
+FramePolicy policy_for(const std::string& param, bool recording) {
+  if (param == "latest") return FramePolicy::latest;
+  if (param == "block") return FramePolicy::block;
+  return recording ? FramePolicy::block : FramePolicy::latest;
+}
+
+}  // namespace
+
+bool names_a_recording(const std::string& uri) {
+  if (uri.empty()) return false;
+  std::error_code error;
+  return ends_with_oni(uri) || fs::is_regular_file(uri, error);
+}
+
+// Declared in this order so that the stream goes before the device, and both before OpenNI2.
+struct OpenNi2Source::Session {
+  std::shared_ptr<const OpenNiRuntime> runtime;
+  openni::Device device;
+  openni::VideoStream stream;
+  bool started = false;
+  bool live = false;  // a device, not a recording
+
+  ~Session() {
+    if (stream.isValid()) {
+      if (started) {
+        stream.stop();
+        // Some drivers return from stop() while their frame thread still finishes its current
+        // period (OpenNI2's own test driver, DummyDevice, never joins it); destroying the stream
+        // or unloading the driver under that thread crashes the process. A device is given
+        // 100 ms (three frame periods at 30 Hz) to let go; recordings' player joins its thread.
+        if (live) std::this_thread::sleep_for(kStopGrace);
+      }
+      stream.destroy();
+    }
+    if (device.isValid()) device.close();
+  }
+};
+
+StageSpec OpenNi2Source::spec() {
+  StageSpec spec(
+      "io.openni2",
+      "Depth frames from an OpenNI2 device or an .oni recording (see docs/cameras.md).\n"
+      "'uri' is empty (the first device OpenNI2 finds), a device URI as `facet doctor` lists "
+      "it, or the path of an .oni file, which OpenNI2's file driver plays. Depth is CV_16UC1 "
+      "in mm (the device's 1 mm depth mode; 0 = no measurement). Every frame carries its "
+      "index in this stream, the device's timestamp (microseconds, converted to ns), the "
+      "stem frame_NNNNNN and pinhole intrinsics from the stream's field of view (or fx, fy, "
+      "cx, cy when given). policy 'latest' (live) passes on the newest frame and drops the "
+      "ones that queued up while the graph was busy; 'block' passes on every frame. Frames "
+      "the device numbered but this source never passed on are reported as the metric "
+      "dropped_frames and in a warning at most every 300 frames. A recording ends the "
+      "stream after its last frame unless 'loop' is set. Errors name the URI and quote "
+      "OpenNI2.");
+  spec.output<DepthImage>("depth",
+                          "Depth, CV_16UC1 in mm (0 = invalid), with frame index, device "
+                          "timestamp, stem and camera intrinsics.")
+      .param("uri", "",
+             "Device URI (as `facet doctor` lists them), path of an .oni recording, or empty "
+             "for the first device found.",
+             {.origin = "empty: the first device"})
+      .param("width", 0, "Depth image width of the video mode; 0 = the device's default.",
+             {.unit = "px", .min = 0, .max = 4096})
+      .param("height", 0, "Depth image height of the video mode; 0 = the device's default.",
+             {.unit = "px", .min = 0, .max = 4096})
+      .param("fps", 0, "Frame rate of the video mode; 0 = the device's default.",
+             {.unit = "Hz", .min = 0, .max = 1000})
+      .param("registration", false,
+             "Register depth to the colour camera (the device warps depth into the colour "
+             "image; the intrinsics are then the colour camera's). An error when the device "
+             "cannot.")
+      .param("mirror", false,
+             "Mirror the image left to right (OpenNI2's mirroring; off keeps the camera "
+             "geometry of the intrinsics).")
+      .param("policy", "auto",
+             "latest: newest frame, stale ones dropped (live use); block: every frame in order; "
+             "auto: latest for devices, block for recordings.",
+             {.choices = {std::string("auto"), std::string("latest"), std::string("block")}})
+      .param("timeout_ms", 2000,
+             "How long to wait for a frame before the run stops with an error naming the URI.",
+             {.unit = "ms", .min = 1, .max = 600000})
+      .param("speed", -1.0,
+             "Recordings only: playback speed as a multiple of the recorded rate; -1 = as fast "
+             "as the graph reads (every frame, no waiting).",
+             {.min = -1.0, .max = 100.0, .origin = "-1: offline processing"})
+      .param("loop", false,
+             "Recordings only: start again after the last frame instead of ending the stream.")
+      .param("fx", 0.0, "Focal length in x; 0 = from the field of view.",
+             {.unit = "px", .min = 0.0})
+      .param("fy", 0.0, "Focal length in y; 0 = from the field of view.",
+             {.unit = "px", .min = 0.0})
+      .param("cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"})
+      .param("cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"})
+      .concurrency(Concurrency::serial);
+  return spec;
+}
+
+OpenNi2Source::OpenNi2Source(const Params& params)
+    : uri_(params.get_string("uri")),
+      registration_(params.get_bool("registration")),
+      mirror_(params.get_bool("mirror")),
+      policy_param_(params.get_string("policy")),
+      timeout_ms_(static_cast<int>(params.get_int("timeout_ms"))),
+      speed_(params.get_double("speed")),
+      loop_(params.get_bool("loop")) {
+  request_.width_px = static_cast<int>(params.get_int("width"));
+  request_.height_px = static_cast<int>(params.get_int("height"));
+  request_.fps = static_cast<int>(params.get_int("fps"));
+  given_.fx = params.get_double("fx");
+  given_.fy = params.get_double("fy");
+  given_.cx = params.get_double("cx");
+  given_.cy = params.get_double("cy");
+  if (speed_ != -1.0 && !(speed_ > 0.0)) {
+    throw StageError("param 'speed' is " + std::to_string(speed_) +
+                     ": give -1 (as fast as possible) or a multiple of the recorded rate > 0");
+  }
+  if ((given_.fx > 0.0) != (given_.fy > 0.0)) {
+    throw StageError("params fx and fy must both be set (> 0) when either is");
+  }
+}
+
+OpenNi2Source::~OpenNi2Source() = default;
+
+std::string OpenNi2Source::what() const {
+  if (uri_.empty()) return "the first OpenNI2 device (uri \"\")";
+  return (recording_ ? "recording '" : "OpenNI2 device '") + uri_ + "'";
+}
+
+void OpenNi2Source::open(const OpenContext& /*ctx*/) {
+  recording_ = names_a_recording(uri_);
+  policy_ = policy_for(policy_param_, recording_);
+  frames_read_ = 0;
+  drops_ = FrameDrops();
+  if (recording_) {
+    std::error_code error;
+    if (!fs::exists(uri_, error)) {
+      throw StageError("recording '" + uri_ + "' does not exist (param 'uri': an .oni file, a " +
+                       "device URI, or empty for the first device)");
+    }
+    if (!fs::is_regular_file(uri_, error)) {
+      throw StageError("recording '" + uri_ + "' is not a file");
+    }
+  }
+  start_session();
+}
+
+void OpenNi2Source::start_session() {
+  auto session = std::make_unique<Session>();
+  session->runtime = OpenNiRuntime::acquire();
+  session->live = !recording_;
+  openni::Device& device = session->device;
+  if (device.open(uri_.empty() ? openni::ANY_DEVICE : uri_.c_str()) != openni::STATUS_OK) {
+    const std::string reason = openni_last_error();
+    if (recording_) {
+      throw StageError("cannot play recording '" + uri_ + "': OpenNI2 says: " + reason +
+                       " (is it an .oni file OpenNI2 wrote?)");
+    }
+    if (uri_.empty()) {
+      throw StageError("no OpenNI2 device to open (uri \"\" = the first device): OpenNI2 says: " +
+                       reason + "; `facet doctor` lists the drivers and devices OpenNI2 finds");
+    }
+    throw StageError("cannot open OpenNI2 device '" + uri_ + "': OpenNI2 says: " + reason +
+                     " (unplugged, or busy in another program?; `facet doctor` lists devices)");
+  }
+  const openni::SensorInfo* depth_sensor = device.getSensorInfo(openni::SENSOR_DEPTH);
+  if (depth_sensor == nullptr) throw StageError(what() + " has no depth sensor");
+  openni::VideoStream& stream = session->stream;
+  if (stream.create(device, openni::SENSOR_DEPTH) != openni::STATUS_OK) {
+    throw StageError("cannot create the depth stream of " + what() +
+                     ": OpenNI2 says: " + openni_last_error());
+  }
+
+  std::vector<DepthMode> supported;
+  const auto& modes = depth_sensor->getSupportedVideoModes();
+  for (int i = 0; i < modes.getSize(); ++i)
+    supported.push_back(to_depth_mode(modes[i]));
+  const DepthMode current = to_depth_mode(stream.getVideoMode());
+  if (recording_) {
+    // A recording's mode is what was recorded; a request can only be checked against it.
+    if (!current.millimetres) {
+      throw StageError(what() + " holds depth as " + current.pixel_format +
+                       "; io.openni2 reads 1 mm depth only");
+    }
+    mode_ = choose_depth_mode({current}, current, request_, uri_);
+  } else {
+    mode_ = choose_depth_mode(supported, current, request_, uri_.empty() ? "(first device)" : uri_);
+    if (!(mode_ == current) && stream.setVideoMode(to_video_mode(mode_)) != openni::STATUS_OK) {
+      throw StageError("cannot set depth mode " + describe(mode_) + " on " + what() +
+                       ": OpenNI2 says: " + openni_last_error());
+    }
+  }
+
+  if (stream.isPropertySupported(openni::STREAM_PROPERTY_MIRRORING)) {
+    if (stream.setMirroringEnabled(mirror_) != openni::STATUS_OK && mirror_) {
+      throw StageError("cannot mirror " + what() + ": OpenNI2 says: " + openni_last_error());
+    }
+  } else if (mirror_) {
+    throw StageError(what() + " does not support mirroring (param 'mirror')");
+  }
+
+  double hfov_rad = stream.getHorizontalFieldOfView();
+  double vfov_rad = stream.getVerticalFieldOfView();
+  if (registration_) {
+    if (!device.isImageRegistrationModeSupported(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR)) {
+      throw StageError(what() + " cannot register depth to colour (param 'registration')");
+    }
+    if (device.setImageRegistrationMode(openni::IMAGE_REGISTRATION_DEPTH_TO_COLOR) !=
+        openni::STATUS_OK) {
+      throw StageError("cannot register depth to colour on " + what() +
+                       ": OpenNI2 says: " + openni_last_error());
+    }
+    // Registered depth is in the colour camera's geometry: take that camera's field of view.
+    openni::VideoStream colour;
+    if (device.hasSensor(openni::SENSOR_COLOR) &&
+        colour.create(device, openni::SENSOR_COLOR) == openni::STATUS_OK) {
+      hfov_rad = colour.getHorizontalFieldOfView();
+      vfov_rad = colour.getVerticalFieldOfView();
+      colour.destroy();
+    }
+  }
+
+  if (recording_) {
+    openni::PlaybackControl* playback = device.getPlaybackControl();
+    if (playback == nullptr) throw StageError(what() + ": OpenNI2 gives no playback control");
+    playback->setRepeatEnabled(loop_);
+    if (playback->setSpeed(static_cast<float>(speed_)) != openni::STATUS_OK) {
+      throw StageError("cannot set playback speed " + std::to_string(speed_) + " on " + what() +
+                       ": OpenNI2 says: " + openni_last_error());
+    }
+    frames_in_recording_ = std::max(0, playback->getNumberOfFrames(stream));
+  }
+  if (given_.fx > 0.0) {
+    camera_ = given_;
+    camera_.width = mode_.width_px;
+    camera_.height = mode_.height_px;
+  } else {
+    camera_ = intrinsics_from_fov(mode_.width_px, mode_.height_px, hfov_rad, vfov_rad);
+    if (!camera_.valid()) {
+      throw StageError(what() + " reports no field of view (" + std::to_string(hfov_rad) + " x " +
+                       std::to_string(vfov_rad) + " rad): give fx, fy, cx, cy");
+    }
+  }
+  if (stream.start() != openni::STATUS_OK) {
+    throw StageError("cannot start the depth stream of " + what() +
+                     ": OpenNI2 says: " + openni_last_error());
+  }
+  session->started = true;
+  session_ = std::move(session);
+}
+
+void OpenNi2Source::process(ProcessContext& ctx) {
+  if (!session_) throw StageError("io.openni2: process() before open()");
+  if (recording_ && !loop_ && frames_in_recording_ > 0 && frames_read_ >= frames_in_recording_) {
+    ctx.end_of_stream();
+    return;
+  }
+  openni::VideoStream* streams[] = {&session_->stream};
+  int ready = -1;
+  const openni::Status waited = openni::OpenNI::waitForAnyStream(streams, 1, &ready, timeout_ms_);
+  if (waited == openni::STATUS_TIME_OUT) {
+    // A recording that stops delivering has ended (its frame count may be unknown).
+    if (recording_ && !loop_ && frames_read_ > 0) {
+      ctx.end_of_stream();
+      return;
+    }
+    throw StageError("no frame from " + what() + " within " + std::to_string(timeout_ms_) +
+                     " ms (param 'timeout_ms'): OpenNI2 says: " + openni_last_error());
+  }
+  if (waited != openni::STATUS_OK) {
+    throw StageError("waiting for a frame from " + what() +
+                     " failed: OpenNI2 says: " + openni_last_error());
+  }
+  openni::VideoFrameRef frame;
+  if (session_->stream.readFrame(&frame) != openni::STATUS_OK) {
+    throw StageError("cannot read a frame from " + what() +
+                     ": OpenNI2 says: " + openni_last_error());
+  }
+  ++frames_read_;
+  if (policy_ == FramePolicy::latest) {
+    // Drain what queued up while the graph worked on the previous frame; keep the newest.
+    openni::VideoFrameRef newer;
+    while (openni::OpenNI::waitForAnyStream(streams, 1, &ready, 0) == openni::STATUS_OK &&
+           session_->stream.readFrame(&newer) == openni::STATUS_OK) {
+      frame = newer;
+      ++frames_read_;
+    }
+  }
+
+  if (frame.getVideoMode().getPixelFormat() != openni::PIXEL_FORMAT_DEPTH_1_MM) {
+    throw StageError(what() + " delivered a frame as " +
+                     pixel_format_name(frame.getVideoMode().getPixelFormat()) +
+                     " instead of 1 mm depth");
+  }
+  const cv::Mat view(frame.getHeight(), frame.getWidth(), CV_16UC1,
+                     const_cast<void*>(frame.getData()),
+                     static_cast<std::size_t>(frame.getStrideInBytes()));
+
+  DepthImage depth;
+  depth.frame.index = ctx.frame_index();
+  depth.frame.timestamp_ns = static_cast<std::int64_t>(frame.getTimestamp()) * 1000;
+  depth.frame.stem = frame_stem(depth.frame.index);
+  depth.camera = camera_;
+  depth.camera.width = frame.getWidth();
+  depth.camera.height = frame.getHeight();
+  depth.depth = view.clone();  // the frame's buffer goes back to OpenNI2 with `frame`
+
+  ctx.metric("dropped_frames", static_cast<double>(drops_.passed_on(frame.getFrameIndex())));
+  if (auto warning = drops_.warning()) ctx.warn(what() + ": " + *warning);
+  ctx.output("depth", std::move(depth));
+}
+
+void OpenNi2Source::close() {
+  session_.reset();
+}
+
+}  // namespace facet::openni2
