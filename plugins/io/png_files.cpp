@@ -1,10 +1,18 @@
 #include "io/png_files.hpp"
 
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "facet/error.hpp"
+#include "io/png_codec.hpp"
 
 namespace facet::io {
 namespace {
@@ -17,15 +25,34 @@ std::string size_text(int width, int height) {
   return std::to_string(width) + "x" + std::to_string(height);
 }
 
-// IMREAD_UNCHANGED keeps 16 bits; the default flags would squash the image to 8-bit colour.
-cv::Mat read_unchanged(const std::filesystem::path& file) {
+std::vector<std::uint8_t> read_bytes(const std::filesystem::path& file) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error)) {
     throw StageError("cannot read " + quoted(file) + ": file not found");
   }
+  std::ifstream in(file, std::ios::binary);
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+  if (in.bad()) throw StageError("cannot read " + quoted(file) + ": read error");
+  if (bytes.empty()) throw StageError("cannot read " + quoted(file) + ": the file is empty");
+  return bytes;
+}
+
+// The dataset's own PNGs (grey 8/16-bit, RGB) go through the fast codec; anything else it does
+// not handle (palette, alpha, interlaced PNGs, other formats) through OpenCV. IMREAD_UNCHANGED
+// keeps 16 bits; the default flags would squash the image to 8-bit colour.
+cv::Mat read_unchanged(const std::filesystem::path& file) {
+  const std::vector<std::uint8_t> bytes = read_bytes(file);
+  if (png::has_signature(bytes)) {
+    try {
+      if (std::optional<cv::Mat> image = png::decode(bytes)) return *std::move(image);
+    } catch (const png::FormatError& e) {
+      throw StageError("cannot read " + quoted(file) + ": " + e.what());
+    }
+  }
   cv::Mat image;
   try {
-    image = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+    image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
   } catch (const cv::Exception& e) {
     throw StageError("cannot read " + quoted(file) + ": " + e.what());
   }
@@ -76,13 +103,12 @@ cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics
 
 void write_png(const std::filesystem::path& file, const cv::Mat& image) {
   CV_Assert(image.type() == CV_16UC1 || image.type() == CV_8UC1 || image.type() == CV_8UC3);
-  bool written = false;
-  try {
-    written = cv::imwrite(file.string(), image);
-  } catch (const cv::Exception& e) {
-    throw StageError("cannot write " + quoted(file) + ": " + e.what());
-  }
-  if (!written) throw StageError("cannot write " + quoted(file));
+  const std::vector<std::uint8_t> bytes = png::encode(image);
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw StageError("cannot write " + quoted(file) + ": " + std::strerror(errno));
 }
 
 }  // namespace facet::io

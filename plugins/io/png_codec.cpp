@@ -1,0 +1,371 @@
+#include "io/png_codec.hpp"
+
+#include <libdeflate.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace facet::io::png {
+namespace {
+
+constexpr std::array<std::uint8_t, 8> kSignature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+// Larger images are left to the general decoder (which will likely refuse them too): the limit
+// keeps the size arithmetic far from overflow and a corrupt header from allocating gigabytes.
+constexpr std::uint64_t kMaxImageBytes = std::uint64_t{1} << 30;
+
+// PNG's colour types (specification section 11.2.2) that this codec handles.
+constexpr std::uint8_t kGrey = 0;
+constexpr std::uint8_t kRgb = 2;
+
+struct CompressorDeleter {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+struct DecompressorDeleter {
+  void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
+};
+
+std::uint32_t read_u32(const std::uint8_t* p) {
+  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) |
+         std::uint32_t{p[3]};
+}
+
+void append_u32(std::vector<std::uint8_t>& out, std::uint32_t value) {
+  out.push_back(static_cast<std::uint8_t>(value >> 24));
+  out.push_back(static_cast<std::uint8_t>(value >> 16));
+  out.push_back(static_cast<std::uint8_t>(value >> 8));
+  out.push_back(static_cast<std::uint8_t>(value));
+}
+
+// A chunk is its length, type, data and a CRC over type and data. The header is appended first,
+// the data by the caller, then the CRC over everything from the type on.
+void append_chunk_header(std::vector<std::uint8_t>& out, std::string_view type,
+                         std::size_t length) {
+  append_u32(out, static_cast<std::uint32_t>(length));
+  for (const char c : type) out.push_back(static_cast<std::uint8_t>(c));
+}
+void append_crc(std::vector<std::uint8_t>& out, std::size_t chunk_type_offset) {
+  const std::size_t length = out.size() - chunk_type_offset;
+  append_u32(out, libdeflate_crc32(0, out.data() + chunk_type_offset, length));
+}
+
+std::uint8_t paeth_predictor(int left, int up, int up_left) {
+  const int estimate = left + up - up_left;
+  const int to_left = std::abs(estimate - left);
+  const int to_up = std::abs(estimate - up);
+  const int to_up_left = std::abs(estimate - up_left);
+  if (to_left <= to_up && to_left <= to_up_left) return static_cast<std::uint8_t>(left);
+  if (to_up <= to_up_left) return static_cast<std::uint8_t>(up);
+  return static_cast<std::uint8_t>(up_left);
+}
+
+// One row of `image` as PNG stores it: samples big-endian, colour as RGB.
+void pack_row(const cv::Mat& image, int row, std::uint8_t* out) {
+  const int width = image.cols;
+  switch (image.type()) {
+    case CV_8UC1:
+      std::memcpy(out, image.ptr<std::uint8_t>(row), static_cast<std::size_t>(width));
+      break;
+    case CV_16UC1: {
+      const auto* in = image.ptr<std::uint16_t>(row);
+      for (int x = 0; x < width; ++x) {
+        out[2 * x] = static_cast<std::uint8_t>(in[x] >> 8);
+        out[2 * x + 1] = static_cast<std::uint8_t>(in[x]);
+      }
+      break;
+    }
+    default: {  // CV_8UC3, BGR
+      const auto* in = image.ptr<std::uint8_t>(row);
+      for (int x = 0; x < width; ++x) {
+        out[3 * x] = in[3 * x + 2];
+        out[3 * x + 1] = in[3 * x + 1];
+        out[3 * x + 2] = in[3 * x];
+      }
+      break;
+    }
+  }
+}
+
+// Writes the filter byte and the filtered row. `previous` is the packed row above (zeros for the
+// first row). One loop per filter, so that none of them branches per byte.
+void filter_row(Filter filter, const std::uint8_t* row, const std::uint8_t* previous,
+                std::size_t row_bytes, std::size_t pixel_bytes, std::uint8_t* out) {
+  out[0] = static_cast<std::uint8_t>(filter);
+  std::uint8_t* filtered = out + 1;
+  const std::size_t first = std::min(pixel_bytes, row_bytes);  // bytes with no left neighbour
+  switch (filter) {
+    case Filter::none:
+      std::memcpy(filtered, row, row_bytes);
+      return;
+    case Filter::sub:
+      std::memcpy(filtered, row, first);
+      for (std::size_t i = first; i < row_bytes; ++i)
+        filtered[i] = static_cast<std::uint8_t>(row[i] - row[i - pixel_bytes]);
+      return;
+    case Filter::up:
+      for (std::size_t i = 0; i < row_bytes; ++i)
+        filtered[i] = static_cast<std::uint8_t>(row[i] - previous[i]);
+      return;
+    case Filter::average:
+      for (std::size_t i = 0; i < first; ++i)
+        filtered[i] = static_cast<std::uint8_t>(row[i] - previous[i] / 2);
+      for (std::size_t i = first; i < row_bytes; ++i)
+        filtered[i] = static_cast<std::uint8_t>(row[i] - (row[i - pixel_bytes] + previous[i]) / 2);
+      return;
+    case Filter::paeth:
+      for (std::size_t i = 0; i < first; ++i)
+        filtered[i] = static_cast<std::uint8_t>(row[i] - previous[i]);
+      for (std::size_t i = first; i < row_bytes; ++i) {
+        filtered[i] = static_cast<std::uint8_t>(
+            row[i] - paeth_predictor(row[i - pixel_bytes], previous[i], previous[i - pixel_bytes]));
+      }
+      return;
+  }
+}
+
+// Undoes the filter of one row in place. `previous` is the row above, already unfiltered, or
+// nullptr for the first row (which the specification treats as a row of zeros).
+void unfilter_row(std::uint8_t filter, std::uint8_t* row, const std::uint8_t* previous,
+                  std::size_t row_bytes, std::size_t pixel_bytes) {
+  switch (filter) {
+    case 0:
+      return;
+    case 1:
+      for (std::size_t i = pixel_bytes; i < row_bytes; ++i)
+        row[i] = static_cast<std::uint8_t>(row[i] + row[i - pixel_bytes]);
+      return;
+    case 2:
+      if (previous == nullptr) return;
+      for (std::size_t i = 0; i < row_bytes; ++i)
+        row[i] = static_cast<std::uint8_t>(row[i] + previous[i]);
+      return;
+    case 3:
+      for (std::size_t i = 0; i < row_bytes; ++i) {
+        const int left = i >= pixel_bytes ? row[i - pixel_bytes] : 0;
+        const int up = previous != nullptr ? previous[i] : 0;
+        row[i] = static_cast<std::uint8_t>(row[i] + (left + up) / 2);
+      }
+      return;
+    case 4:
+      if (previous == nullptr) {  // Paeth on the first row predicts from the left only
+        unfilter_row(1, row, previous, row_bytes, pixel_bytes);
+        return;
+      }
+      for (std::size_t i = 0; i < pixel_bytes && i < row_bytes; ++i)
+        row[i] = static_cast<std::uint8_t>(row[i] + previous[i]);
+      for (std::size_t i = pixel_bytes; i < row_bytes; ++i) {
+        row[i] = static_cast<std::uint8_t>(
+            row[i] + paeth_predictor(row[i - pixel_bytes], previous[i], previous[i - pixel_bytes]));
+      }
+      return;
+    default:
+      throw FormatError("row filter " + std::to_string(filter) + " is not one of PNG's 0-4");
+  }
+}
+
+struct Header {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint8_t bit_depth = 0;
+  std::uint8_t colour_type = 0;
+  std::uint8_t interlace = 0;
+};
+
+Header parse_header(const std::uint8_t* data, std::uint32_t length) {
+  if (length != 13)
+    throw FormatError("IHDR chunk has " + std::to_string(length) + " bytes, not 13");
+  Header header;
+  header.width = read_u32(data);
+  header.height = read_u32(data + 4);
+  header.bit_depth = data[8];
+  header.colour_type = data[9];
+  header.interlace = data[12];
+  if (header.width == 0 || header.height == 0)
+    throw FormatError("image has a zero width or height");
+  if (data[10] != 0 || data[11] != 0) throw FormatError("unknown compression or filter method");
+  return header;
+}
+
+bool handled(const Header& header) {
+  const bool grey =
+      header.colour_type == kGrey && (header.bit_depth == 8 || header.bit_depth == 16);
+  const bool rgb = header.colour_type == kRgb && header.bit_depth == 8;
+  return (grey || rgb) && header.interlace == 0;
+}
+
+// Copies the unfiltered rows into an OpenCV image: samples to host order, RGB to BGR.
+cv::Mat unpack(const Header& header, const std::uint8_t* rows, std::size_t stride) {
+  const int width = static_cast<int>(header.width);
+  const int height = static_cast<int>(header.height);
+  if (header.colour_type == kRgb) {
+    cv::Mat image(height, width, CV_8UC3);
+    for (int y = 0; y < height; ++y) {
+      const std::uint8_t* in = rows + static_cast<std::size_t>(y) * stride;
+      auto* out = image.ptr<std::uint8_t>(y);
+      for (int x = 0; x < width; ++x) {
+        out[3 * x] = in[3 * x + 2];
+        out[3 * x + 1] = in[3 * x + 1];
+        out[3 * x + 2] = in[3 * x];
+      }
+    }
+    return image;
+  }
+  if (header.bit_depth == 8) {
+    cv::Mat image(height, width, CV_8UC1);
+    for (int y = 0; y < height; ++y)
+      std::memcpy(image.ptr(y), rows + static_cast<std::size_t>(y) * stride,
+                  static_cast<std::size_t>(width));
+    return image;
+  }
+  cv::Mat image(height, width, CV_16UC1);
+  for (int y = 0; y < height; ++y) {
+    const std::uint8_t* in = rows + static_cast<std::size_t>(y) * stride;
+    auto* out = image.ptr<std::uint16_t>(y);
+    for (int x = 0; x < width; ++x)
+      out[x] = static_cast<std::uint16_t>((in[2 * x] << 8) | in[2 * x + 1]);
+  }
+  return image;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode(const cv::Mat& image, const EncodeOptions& options) {
+  const int type = image.type();
+  if (image.empty() || (type != CV_8UC1 && type != CV_16UC1 && type != CV_8UC3)) {
+    throw std::invalid_argument("png::encode takes a non-empty CV_8UC1, CV_16UC1 or CV_8UC3 image");
+  }
+  const std::size_t pixel_bytes = image.elemSize();
+  const std::size_t row_bytes = pixel_bytes * static_cast<std::size_t>(image.cols);
+  const std::size_t stride = row_bytes + 1;
+
+  // Filter every row into one buffer, the uncompressed zlib payload.
+  std::vector<std::uint8_t> filtered(stride * static_cast<std::size_t>(image.rows));
+  std::vector<std::uint8_t> rows(2 * row_bytes, 0);  // this row and the one above, packed
+  std::uint8_t* current = rows.data();
+  std::uint8_t* previous = rows.data() + row_bytes;
+  for (int y = 0; y < image.rows; ++y) {
+    pack_row(image, y, current);
+    filter_row(options.filter, current, previous, row_bytes, pixel_bytes,
+               filtered.data() + static_cast<std::size_t>(y) * stride);
+    std::swap(current, previous);
+  }
+
+  const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+      libdeflate_alloc_compressor(std::clamp(options.level, 1, 12)));
+  if (!compressor) throw std::bad_alloc();
+  const std::size_t bound = libdeflate_zlib_compress_bound(compressor.get(), filtered.size());
+
+  std::vector<std::uint8_t> out;
+  out.reserve(kSignature.size() + 25 + 12 + bound + 12);
+  for (const std::uint8_t byte : kSignature) out.push_back(byte);
+
+  append_chunk_header(out, "IHDR", 13);
+  const std::size_t ihdr_type = out.size() - 4;
+  append_u32(out, static_cast<std::uint32_t>(image.cols));
+  append_u32(out, static_cast<std::uint32_t>(image.rows));
+  out.push_back(static_cast<std::uint8_t>(image.depth() == CV_16U ? 16 : 8));
+  out.push_back(image.channels() == 3 ? kRgb : kGrey);
+  out.push_back(0);  // compression: deflate
+  out.push_back(0);  // filter method: adaptive (per-row filter bytes)
+  out.push_back(0);  // no interlace
+  append_crc(out, ihdr_type);
+
+  // IDAT: compress straight into the output's reserved tail, then fill in the length.
+  const std::size_t idat_length_at = out.size();
+  append_chunk_header(out, "IDAT", 0);
+  const std::size_t idat_type = out.size() - 4;
+  out.resize(out.size() + bound);
+  const std::size_t compressed = libdeflate_zlib_compress(
+      compressor.get(), filtered.data(), filtered.size(), out.data() + idat_type + 4, bound);
+  if (compressed == 0) throw std::runtime_error("png::encode: deflate output exceeded its bound");
+  out.resize(idat_type + 4 + compressed);
+  for (int byte = 0; byte < 4; ++byte)
+    out[idat_length_at + static_cast<std::size_t>(byte)] =
+        static_cast<std::uint8_t>(compressed >> (24 - 8 * byte));
+  append_crc(out, idat_type);
+
+  append_chunk_header(out, "IEND", 0);
+  append_crc(out, out.size() - 4);
+  return out;
+}
+
+bool has_signature(std::span<const std::uint8_t> bytes) {
+  return bytes.size() >= kSignature.size() &&
+         std::equal(kSignature.begin(), kSignature.end(), bytes.begin());
+}
+
+std::optional<cv::Mat> decode(std::span<const std::uint8_t> bytes) {
+  if (!has_signature(bytes)) throw FormatError("not a PNG file (no PNG signature)");
+  Header header;
+  bool have_header = false;
+  bool ended = false;
+  std::vector<std::uint8_t> compressed;
+  std::size_t at = kSignature.size();
+  while (!ended) {
+    if (bytes.size() - at < 12) throw FormatError("file is truncated (a chunk is cut off)");
+    const std::uint32_t length = read_u32(bytes.data() + at);
+    const std::uint8_t* type = bytes.data() + at + 4;
+    const std::string_view type_name(reinterpret_cast<const char*>(type), 4);
+    if (length > bytes.size() - at - 12) {
+      throw FormatError("file is truncated (chunk " + std::string(type_name) + " is cut off)");
+    }
+    const std::uint8_t* data = type + 4;
+    const std::uint32_t stored_crc = read_u32(data + length);
+    if (libdeflate_crc32(0, type, length + 4u) != stored_crc) {
+      throw FormatError("chunk " + std::string(type_name) + " fails its CRC check (corrupt file)");
+    }
+    at += 12 + std::size_t{length};
+
+    if (!have_header) {
+      if (type_name != "IHDR")
+        throw FormatError("first chunk is " + std::string(type_name) + ", not IHDR");
+      header = parse_header(data, length);
+      if (!handled(header)) return std::nullopt;
+      have_header = true;
+    } else if (type_name == "IDAT") {
+      compressed.insert(compressed.end(), data, data + length);
+    } else if (type_name == "IEND") {
+      ended = true;
+    } else if ((type[0] & 0x20) == 0 && type_name != "PLTE") {
+      return std::nullopt;  // a critical chunk this codec does not know
+    }
+  }
+  if (compressed.empty()) throw FormatError("no image data (IDAT chunk)");
+
+  const std::uint64_t pixel_bytes = (header.colour_type == kRgb ? 3u : 1u) * header.bit_depth / 8u;
+  const std::uint64_t row_bytes = pixel_bytes * header.width;
+  const std::uint64_t total = (row_bytes + 1) * header.height;
+  if (total > kMaxImageBytes) return std::nullopt;
+
+  std::vector<std::uint8_t> rows(static_cast<std::size_t>(total));
+  const std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> decompressor(
+      libdeflate_alloc_decompressor());
+  if (!decompressor) throw std::bad_alloc();
+  std::size_t produced = 0;
+  const libdeflate_result result =
+      libdeflate_zlib_decompress(decompressor.get(), compressed.data(), compressed.size(),
+                                 rows.data(), rows.size(), &produced);
+  if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
+    return std::nullopt;  // more data than the header says: libpng tolerates it, let it decide
+  }
+  if (result != LIBDEFLATE_SUCCESS) throw FormatError("image data is corrupt (bad deflate stream)");
+  if (produced != rows.size()) {
+    throw FormatError("image data is shorter than the header's " + std::to_string(header.width) +
+                      "x" + std::to_string(header.height) + " pixels (truncated file?)");
+  }
+
+  const std::size_t stride = static_cast<std::size_t>(row_bytes) + 1;
+  for (std::uint32_t y = 0; y < header.height; ++y) {
+    std::uint8_t* row = rows.data() + std::size_t{y} * stride;
+    const std::uint8_t* previous = y == 0 ? nullptr : row - stride + 1;
+    unfilter_row(row[0], row + 1, previous, static_cast<std::size_t>(row_bytes),
+                 static_cast<std::size_t>(pixel_bytes));
+  }
+  return unpack(header, rows.data() + 1, stride);
+}
+
+}  // namespace facet::io::png
