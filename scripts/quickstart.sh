@@ -15,6 +15,7 @@ packages=(
   g++ cmake ninja-build pkg-config ccache
   libboost-dev libboost-filesystem-dev libyaml-cpp-dev libopencv-dev
   libeigen3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libpcl-dev
+  libdeflate-dev
 )
 
 install_packages() {
