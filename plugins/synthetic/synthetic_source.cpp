@@ -1,0 +1,269 @@
+#include "synthetic/synthetic_source.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <opencv2/core.hpp>
+#include <stdexcept>
+
+#include "facet/types/images.hpp"
+#include "synthetic/random_stream.hpp"
+
+namespace facet::synthetic {
+namespace {
+
+// Purposes of the random streams derived from the seed.
+constexpr std::uint64_t kLayoutStream = 1;
+constexpr std::uint64_t kNoiseStream = 2;
+constexpr int kLayoutAttempts = 60;
+
+std::vector<ParamValue> preset_choices() {
+  std::vector<ParamValue> choices;
+  for (const std::string& name : preset_names())
+    choices.emplace_back(name);
+  return choices;
+}
+
+std::string frame_stem(const std::string& preset, std::uint64_t seed, std::int64_t index) {
+  char number[24];
+  std::snprintf(number, sizeof number, "%06lld", static_cast<long long>(index));
+  return preset + "_" + std::to_string(seed) + "_" + number;
+}
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+}  // namespace
+
+StageSpec SyntheticSource::spec() {
+  StageSpec spec(
+      "io.synthetic",
+      "Generates table-top scenes as a Kinect v1 sees them, with ground-truth labels.\n"
+      "Boxes, rounded boxes, cylinders (upright and lying) and spheres on a table (optionally "
+      "with a wall behind it), ray-cast exactly and then measured with a Kinect v1 noise model: "
+      "range limits, projector shadows, dropouts beside depth jumps and at grazing angles, "
+      "axial noise growing with the square of the distance and depth from disparity quantised "
+      "to 1/8 px (docs/synthetic.md). Presets of increasing complexity follow the levels of "
+      "the paper's Table II. A static scene (the default) is the same layout in every frame with "
+      "independent noise, for stability measurements. Everything is deterministic for a seed. "
+      "Reports the metrics valid_ratio (measured pixels / all) and objects_visible.");
+  spec.output<DepthImage>("depth",
+                          "Depth, CV_16UC1 in mm (0 = no measurement), with the frame index, the "
+                          "stem <preset>_<seed>_<index, 6 digits>, a timestamp of index / fps and "
+                          "the camera intrinsics.")
+      .output<LabelImage>("labels",
+                          "Ground truth, CV_32SC1: 1..N the objects, only where they are visible "
+                          "and measured (depth > 0); 0 table, floor, wall and no measurement. "
+                          "count = N, the objects of the scene.")
+      .param("preset", "separated3",
+             "Scene: separated3 (3 separated objects), touching_pairs (5 objects: two touching "
+             "pairs and one alone), stacked_occluded (9 objects: three stacks and an occluding "
+             "pair), clutter20 (20 smaller objects close together).",
+             {.choices = preset_choices(), .origin = "the levels of the paper's Table II"})
+      .param("seed", 1, "Seed of the layout and the noise; the same seed gives the same frames.",
+             {.min = 0.0})
+      .param("frames", 10,
+             "Frames to generate before the stream ends; 0 = no end (bound it "
+             "with facet run --frames).",
+             {.unit = "frames", .min = 0.0})
+      .param("scene", "static",
+             "static: one layout, new noise every frame (stability measurements); new: a new "
+             "layout every frame.",
+             {.choices = {std::string("static"), std::string("new")}})
+      .param("fps", 30.0, "Nominal frame rate; timestamps are frame index / fps.",
+             {.unit = "Hz", .min = 0.001, .max = 10000.0, .origin = "Kinect v1: 30 Hz"})
+      .param("width", 640, "Image width.",
+             {.unit = "px", .min = 8.0, .max = 4096.0, .origin = "Kinect v1 depth: 640 x 480"})
+      .param("height", 480, "Image height.",
+             {.unit = "px", .min = 8.0, .max = 4096.0, .origin = "Kinect v1 depth: 640 x 480"})
+      .param("focal_px", 0.0,
+             "Focal length of the depth image (fx = fy; cx, cy at the image centre); 0 = 525 * "
+             "width / 640.",
+             {.unit = "px",
+              .min = 0.0,
+              .max = 100000.0,
+              .origin = "525: the OpenNI Kinect value, as in data/mosd"})
+      .param("camera_distance_m", 0.95,
+             "Distance from the camera to the table point at the image centre.",
+             {.unit = "m", .min = 0.3, .max = 5.0, .origin = "like the mOSD frames"})
+      .param("camera_tilt_deg", 50.0, "Angle of the optical axis below the horizontal.",
+             {.unit = "deg", .min = 10.0, .max = 90.0, .origin = "like the mOSD frames"})
+      .param("table_height_m", 0.72, "Height of the table top above the floor.",
+             {.unit = "m", .min = 0.05, .max = 3.0})
+      .param("wall", false, "A wall behind the table (background, label 0).")
+      .param("wall_distance_m", 0.45,
+             "Distance of the wall behind the table point at the image centre (along the view).",
+             {.unit = "m", .min = 0.3, .max = 5.0})
+      .param("min_visible_px", 150,
+             "Every object shows at least this many pixels to a perfect camera; layouts that "
+             "do not are drawn again.",
+             {.unit = "px", .min = 1.0})
+      .param("noise", true,
+             "Kinect v1 effects on; false: the exact depth rounded to mm (range limits apply).")
+      .param("axial_noise_scale", 1.0,
+             "Factor on the axial noise sigma_z = 0.0012 + 0.0019 (z - 0.4)^2 m.",
+             {.min = 0.0, .max = 100.0, .origin = "Nguyen, Izadi, Lovell 2012"})
+      .param("disparity_step_px", 0.125,
+             "Disparity resolution; depth is ir_focal_px * baseline_m / quantised disparity. "
+             "0 = no quantisation.",
+             {.unit = "px", .min = 0.0, .max = 10.0, .origin = "Kinect v1: 1/8 px"})
+      .param("ir_focal_px", 580.0, "Focal length of the IR camera that measures the disparity.",
+             {.unit = "px", .min = 1.0, .max = 100000.0, .origin = "Kinect v1 literature"})
+      .param("baseline_m", 0.075,
+             "Projector offset to the camera's right (+x): shadows fall on the objects' left; "
+             "negative = to the left.",
+             {.unit = "m", .min = -1.0, .max = 1.0, .origin = "Kinect v1: 7.5 cm"})
+      .param("shadows", true, "Surfaces the projector does not light get no measurement.")
+      .param("jump_dropout", 0.5,
+             "Chance that a pixel beside a depth jump (4-neighbour farther than jump_min_m + "
+             "1 % of the depth) gets no measurement.",
+             {.min = 0.0, .max = 1.0})
+      .param("jump_min_m", 0.02, "Smallest depth difference between neighbours that is a jump.",
+             {.unit = "m", .min = 0.0, .max = 10.0})
+      .param("grazing_start_deg", 75.0,
+             "Incidence angle (camera or projector ray to the surface normal) from which pixels "
+             "drop out; the chance grows linearly to 1 at grazing_end_deg.",
+             {.unit = "deg", .min = 0.0, .max = 90.0})
+      .param("grazing_end_deg", 88.0, "Incidence angle from which no pixel is measured.",
+             {.unit = "deg", .min = 0.0, .max = 90.0})
+      .param("dropout_cell_px", 4.0,
+             "Dropouts (beside jumps, at grazing angles) come in blobs of about this size: a "
+             "pixel drops out where a smooth random field with cells of this size is below its "
+             "dropout chance; 1 = independent pixels.",
+             {.unit = "px",
+              .min = 1.0,
+              .max = 100.0,
+              .origin = "Kinect v1 disparity is matched over windows of several pixels"})
+      .param("min_depth_m", 0.5, "Nearest measured depth.",
+             {.unit = "m", .min = 0.0, .max = 100.0, .origin = "Kinect v1: about 0.5 m"})
+      .param("max_depth_m", 4.0, "Farthest measured depth.",
+             {.unit = "m", .min = 0.01, .max = 65.0, .origin = "Kinect v1: about 4 m"})
+      .concurrency(Concurrency::serial);
+  return spec;
+}
+
+SyntheticSource::SyntheticSource(const Params& params)
+    : preset_(params.get_string("preset")),
+      seed_(static_cast<std::uint64_t>(params.get_int("seed"))),
+      frames_(params.get_int("frames")),
+      new_scene_each_frame_(params.get_string("scene") == "new"),
+      fps_hz_(params.get_double("fps")),
+      camera_distance_m_(params.get_double("camera_distance_m")),
+      camera_tilt_deg_(params.get_double("camera_tilt_deg")),
+      min_visible_px_(static_cast<int>(params.get_int("min_visible_px"))) {
+  room_.table_height_m = params.get_double("table_height_m");
+  room_.wall = params.get_bool("wall");
+  room_.wall_distance_m = params.get_double("wall_distance_m");
+
+  noise_.enabled = params.get_bool("noise");
+  noise_.axial_noise_scale = params.get_double("axial_noise_scale");
+  noise_.disparity_step_px = params.get_double("disparity_step_px");
+  noise_.ir_focal_px = params.get_double("ir_focal_px");
+  noise_.baseline_m = std::abs(params.get_double("baseline_m"));
+  noise_.shadows = params.get_bool("shadows");
+  noise_.jump_dropout = params.get_double("jump_dropout");
+  noise_.jump_min_m = params.get_double("jump_min_m");
+  noise_.grazing_start_deg = params.get_double("grazing_start_deg");
+  noise_.grazing_end_deg = params.get_double("grazing_end_deg");
+  noise_.dropout_cell_px = params.get_double("dropout_cell_px");
+  noise_.min_depth_m = params.get_double("min_depth_m");
+  noise_.max_depth_m = params.get_double("max_depth_m");
+
+  const auto width = static_cast<int>(params.get_int("width"));
+  const auto height = static_cast<int>(params.get_int("height"));
+  const double focal_px = params.get_double("focal_px");
+  const double focal = focal_px > 0.0 ? focal_px : 525.0 * width / 640.0;
+  intrinsics_ = {focal, focal, 0.5 * (width - 1), 0.5 * (height - 1), width, height};
+
+  if (noise_.grazing_end_deg < noise_.grazing_start_deg) {
+    throw StageError("param grazing_end_deg=" + format_number(noise_.grazing_end_deg) +
+                     " is below grazing_start_deg=" + format_number(noise_.grazing_start_deg) +
+                     ": the dropout chance must grow with the angle");
+  }
+  if (noise_.min_depth_m >= noise_.max_depth_m) {
+    throw StageError("param min_depth_m=" + format_number(noise_.min_depth_m) +
+                     " must be below max_depth_m=" + format_number(noise_.max_depth_m));
+  }
+  rig_ = CameraRig::looking_at(intrinsics_, Vec3(0, 0, 0), camera_distance_m_, camera_tilt_deg_,
+                               params.get_double("baseline_m"));
+}
+
+SyntheticSource::Rendered SyntheticSource::make_scene(std::uint64_t scene_index) const {
+  RandomStream random(mix_seed(seed_, scene_index, kLayoutStream));
+  // Rays end a little beyond the farthest measured depth: what lies farther is never measured.
+  const double max_ray_depth_m = noise_.max_depth_m * 1.01;
+  std::string last_problem;
+  for (int attempt = 0; attempt < kLayoutAttempts; ++attempt) {
+    Rendered rendered;
+    try {
+      rendered.scene = layout_scene(preset_, room_, random);
+    } catch (const std::runtime_error& error) {
+      last_problem = error.what();
+      continue;
+    }
+    rendered.ideal = render_ideal(rendered.scene, rig_, max_ray_depth_m);
+    const std::vector<int> visible = visible_pixels(rendered.ideal, rendered.scene.object_count);
+    int fewest = visible.size() > 1 ? visible[1] : 0;
+    for (std::size_t label = 1; label < visible.size(); ++label)
+      fewest = std::min(fewest, visible[label]);
+    if (fewest >= min_visible_px_) return rendered;
+    last_problem = "an object showed only " + std::to_string(fewest) + " px (min_visible_px " +
+                   std::to_string(min_visible_px_) + ")";
+  }
+  throw StageError("preset '" + preset_ + "', seed " + std::to_string(seed_) + ": no layout in " +
+                   std::to_string(kLayoutAttempts) + " attempts shows every object (" +
+                   last_problem +
+                   "); check camera_distance_m, camera_tilt_deg, the image size "
+                   "and min_visible_px");
+}
+
+void SyntheticSource::open(const OpenContext& /*ctx*/) {
+  emitted_ = 0;
+  static_scene_.reset();
+  if (!new_scene_each_frame_) static_scene_ = make_scene(0);
+}
+
+void SyntheticSource::process(ProcessContext& ctx) {
+  if (frames_ > 0 && emitted_ >= frames_) {
+    ctx.end_of_stream();
+    return;
+  }
+  const std::int64_t index = emitted_;
+  std::optional<Rendered> fresh;
+  if (new_scene_each_frame_) fresh = make_scene(static_cast<std::uint64_t>(index));
+  const Rendered& rendered = new_scene_each_frame_ ? *fresh : *static_scene_;
+
+  RandomStream random(mix_seed(seed_, static_cast<std::uint64_t>(index), kNoiseStream));
+  cv::Mat depth_mm = measure_depth(rendered.ideal, rendered.scene, rig_, noise_, random);
+
+  cv::Mat labels = cv::Mat::zeros(depth_mm.size(), CV_32SC1);
+  rendered.ideal.labels.copyTo(labels, depth_mm > 0);
+
+  FrameHeader header;
+  header.camera = intrinsics_;
+  header.frame.index = index;
+  header.frame.stem = frame_stem(preset_, seed_, index);
+  header.frame.timestamp_ns =
+      static_cast<std::int64_t>(std::llround(static_cast<double>(index) * 1e9 / fps_hz_));
+
+  std::vector<bool> seen(static_cast<std::size_t>(rendered.scene.object_count) + 1, false);
+  for (int v = 0; v < labels.rows; ++v) {
+    const auto* row = labels.ptr<std::int32_t>(v);
+    for (int u = 0; u < labels.cols; ++u)
+      seen[static_cast<std::size_t>(row[u])] = true;
+  }
+  int visible = 0;
+  for (std::size_t label = 1; label < seen.size(); ++label)
+    visible += seen[label] ? 1 : 0;
+
+  ctx.metric("valid_ratio", static_cast<double>(cv::countNonZero(depth_mm)) /
+                                static_cast<double>(depth_mm.total()));
+  ctx.metric("objects_visible", visible);
+  ctx.output("depth", DepthImage{header, depth_mm});
+  ctx.output("labels", LabelImage{header, labels, rendered.scene.object_count});
+  ++emitted_;
+}
+
+}  // namespace facet::synthetic
