@@ -42,8 +42,18 @@ cv::Mat grey_image(const cv::Mat& depth, const GreyRange& range) {
   if (depth.type() == CV_16UC1) {
     std::vector<std::uint8_t> lut(65536);
     lut[0] = 0;
-    for (std::size_t mm = 1; mm < lut.size(); ++mm)
-      lut[mm] = grey_of(static_cast<double>(mm) * 0.001, range);
+    // Every depth from `far` on is kFarGrey: those entries, all but the first metre or two of the
+    // table's 65 m, are filled at once instead of through grey_of's rounding one by one.
+    const bool has_span = range.far_m - range.near_m > 0.0;
+    for (std::size_t mm = 1; mm < lut.size(); ++mm) {
+      const double z_m = static_cast<double>(mm) * 0.001;
+      if (has_span && z_m >= range.far_m) {
+        std::fill(lut.begin() + static_cast<std::ptrdiff_t>(mm), lut.end(),
+                  static_cast<std::uint8_t>(kFarGrey));
+        break;
+      }
+      lut[mm] = grey_of(z_m, range);
+    }
     for (int y = 0; y < depth.rows; ++y) {
       const auto* src = depth.ptr<std::uint16_t>(y);
       auto* dst = grey.ptr<std::uint8_t>(y);
