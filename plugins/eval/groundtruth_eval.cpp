@@ -1,0 +1,115 @@
+#include "eval/groundtruth_eval.hpp"
+
+#include <charconv>
+#include <stdexcept>
+#include <string>
+
+#include "facet/error.hpp"
+#include "facet/types/images.hpp"
+
+namespace facet::eval {
+
+std::set<std::int32_t> parse_label_list(const std::string& text, const char* param) {
+  std::set<std::int32_t> labels;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    std::size_t first = start;
+    std::size_t last = end;
+    while (first < last && text[first] == ' ')
+      ++first;
+    while (last > first && text[last - 1] == ' ')
+      --last;
+    if (first < last) {
+      std::int32_t value = 0;
+      const auto [ptr, error] = std::from_chars(text.data() + first, text.data() + last, value);
+      if (error != std::errc() || ptr != text.data() + last || value <= 0) {
+        throw StageError("param '" + std::string(param) + "': '" +
+                         text.substr(first, last - first) +
+                         "' is not a positive label id (expected e.g. \"1\" or \"1, 4\")");
+      }
+      labels.insert(value);
+    } else if (end < text.size()) {
+      throw StageError("param '" + std::string(param) + "': empty entry in '" + text + "'");
+    }
+    start = end + 1;
+  }
+  return labels;
+}
+
+StageSpec GroundTruthEval::spec() {
+  return StageSpec(
+             "eval.groundtruth",
+             "Scores predicted segments against ground-truth labels (overlap P/R/F).\n"
+             "Ground-truth objects and predicted segments are matched one to one by IoU "
+             "(Hungarian method); P = matched overlap / all predicted object pixels, R = matched "
+             "overlap / all truth object pixels, F = 2PR/(P+R), as in the unseen-object "
+             "segmentation literature (UOIS, OSD). Label 0 is background on both sides: truth "
+             "background is not an object, but predicted pixels on it count against P. Reports "
+             "per frame: precision, recall, f, objects_f75_ratio (objects whose matched pair has "
+             "F >= segmented_f, of all truth objects), objects_f75, over_segmented (objects "
+             "covered by 2+ segments), under_segmented (segments covering 2+ objects), "
+             "merged_objects, matched, truth_objects, segments, mean_iou, and scored (1; 0 for "
+             "a frame without truth, which is skipped, not an error). A frame with truth but no "
+             "segment scores P=1, R=0, F=0; segments but no truth object P=0, R=1, F=0; neither "
+             "P=R=F=1. See docs/compare.md.")
+      .input<LabelImage>("labels", "Predicted segment ids (0 = unlabelled), any integer type.")
+      .optional_input<LabelImage>(
+          "truth",
+          "Ground-truth ids of the same size (0 = background), e.g. io.frames' labels; an "
+          "empty packet (no label file for this frame) skips the frame.")
+      .param("truth_background", "",
+             "Truth ids treated as background besides 0, comma-separated (e.g. \"1\" for a "
+             "table labelled 1); empty = only 0.")
+      .param("min_truth_pixels", 0,
+             "Truth objects with fewer pixels are left out, their pixels ignored in both images.",
+             {.unit = "px", .min = 0})
+      .param("segmented_f", 0.75,
+             "Pair F-measure from which a matched object counts as segmented (objects_f75).",
+             {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.), OSD"})
+      .param("cover", 0.2,
+             "Share of an object's pixels a segment must hold to count as covering it "
+             "(over- and under-segmentation).",
+             {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.)"})
+      .concurrency(Concurrency::reentrant);
+}
+
+GroundTruthEval::GroundTruthEval(const Params& params) {
+  options_.truth_background =
+      parse_label_list(params.get_string("truth_background"), "truth_background");
+  options_.min_truth_pixels = params.get_int("min_truth_pixels");
+  options_.segmented_f = params.get_double("segmented_f");
+  options_.cover = params.get_double("cover");
+}
+
+void GroundTruthEval::process(ProcessContext& ctx) {
+  const bool has_truth = ctx.has_input("truth") && !ctx.input<LabelImage>("truth").labels.empty();
+  if (!has_truth) {
+    ctx.metric("scored", 0.0);
+    return;
+  }
+  const cv::Mat& truth = ctx.input<LabelImage>("truth").labels;
+  const cv::Mat& predicted = ctx.input<LabelImage>("labels").labels;
+  OverlapScores scores;
+  try {
+    scores = score_overlap(truth, predicted, options_);
+  } catch (const std::invalid_argument& error) {
+    throw StageError(std::string("inputs 'truth' and 'labels': ") + error.what());
+  }
+  ctx.metric("scored", 1.0);
+  ctx.metric("precision", scores.precision);
+  ctx.metric("recall", scores.recall);
+  ctx.metric("f", scores.f);
+  ctx.metric("objects_f75_ratio", scores.objects_segmented_ratio);
+  ctx.metric("objects_f75", static_cast<double>(scores.objects_segmented));
+  ctx.metric("over_segmented", static_cast<double>(scores.over_segmented));
+  ctx.metric("under_segmented", static_cast<double>(scores.under_segmenting));
+  ctx.metric("merged_objects", static_cast<double>(scores.merged_objects));
+  ctx.metric("matched", static_cast<double>(scores.matched));
+  ctx.metric("truth_objects", static_cast<double>(scores.truth_objects));
+  ctx.metric("segments", static_cast<double>(scores.segments));
+  ctx.metric("mean_iou", scores.mean_iou);
+}
+
+}  // namespace facet::eval
