@@ -73,6 +73,14 @@ std::uint16_t to_millimetres(double z_m) {
 
 }  // namespace
 
+double KinectNoise::axial_sigma_m(double z_m, double incidence_rad) const {
+  constexpr double kMaxAngle = 89.5 * std::numbers::pi / 180.0;
+  const double theta = std::clamp(incidence_rad, 0.0, kMaxAngle);
+  const double lateral = std::numbers::pi / 2.0 - theta;
+  return axial_noise_scale * (0.0012 + 0.0019 * (z_m - 0.4) * (z_m - 0.4) +
+                              0.0001 / std::sqrt(z_m) * theta * theta / (lateral * lateral));
+}
+
 cv::Mat measure_depth(const IdealFrame& frame, const Scene& scene, const CameraRig& rig,
                       const KinectNoise& noise, RandomStream& random) {
   cv::Mat depth_mm = cv::Mat::zeros(frame.depth_m.size(), CV_16UC1);
@@ -103,14 +111,21 @@ cv::Mat measure_depth(const IdealFrame& frame, const Scene& scene, const CameraR
           dropout_draw < noise.jump_dropout)
         continue;
       // The worse of the two angles: the camera's view and the projector's light.
-      const double angle = std::max(incidence_deg(normals[u], points[u] - rig.position),
-                                    incidence_deg(normals[u], points[u] - rig.projector_position));
+      const double camera_angle = incidence_deg(normals[u], points[u] - rig.position);
+      const double angle =
+          std::max(camera_angle, incidence_deg(normals[u], points[u] - rig.projector_position));
       if (angle >= noise.grazing_start_deg) {
         const double span = std::max(noise.grazing_end_deg - noise.grazing_start_deg, 1e-9);
         if (grazing_draw < (angle - noise.grazing_start_deg) / span) continue;
       }
 
-      double measured = z + noise.axial_sigma_m(z) * gaussian;
+      // Nguyen et al. measured sigma_z on real, already quantised Kinect depth: the noise added
+      // before quantising is what quantisation (a uniform error of one step, variance step^2 / 12)
+      // leaves of it, so that the depth delivered has the model's sigma_z.
+      const double sigma_m = noise.axial_sigma_m(z, camera_angle * std::numbers::pi / 180.0);
+      const double step_m = noise.depth_step_m(z);
+      const double added_m = std::sqrt(std::max(sigma_m * sigma_m - step_m * step_m / 12.0, 0.0));
+      double measured = z + added_m * gaussian;
       if (noise.disparity_step_px > 0.0) {
         const double disparity = disparity_scale / measured;
         const double quantised = std::max(std::round(disparity / noise.disparity_step_px), 1.0) *

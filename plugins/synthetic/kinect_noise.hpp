@@ -22,13 +22,19 @@ struct KinectNoise {
   bool shadows = true;               // pixels the projector does not light get no measurement
   double jump_dropout = 0.5;         // chance of losing a pixel beside a depth jump
   double jump_min_m = 0.02;          // a depth jump: neighbours further apart than this + 1 % z
-  double grazing_start_deg = 75.0;   // incidence angle from which pixels start to drop out
-  double grazing_end_deg = 88.0;     // incidence angle from which every pixel drops out
+  double grazing_start_deg = 80.0;   // incidence angle from which pixels start to drop out
+  double grazing_end_deg = 89.0;     // incidence angle from which every pixel drops out
   double dropout_cell_px = 4.0;      // dropouts come in blobs of about this size
 
-  // The axial standard deviation at depth z (Nguyen, Izadi, Lovell 2012), times the scale.
-  double axial_sigma_m(double z_m) const {
-    return axial_noise_scale * (0.0012 + 0.0019 * (z_m - 0.4) * (z_m - 0.4));
+  // The axial standard deviation of the measured depth at depth z and incidence angle theta
+  // (between the camera ray and the surface normal), times the scale: Nguyen, Izadi, Lovell 2012,
+  // sigma_z = 0.0012 + 0.0019 (z - 0.4)^2 + 0.0001 / sqrt(z) * theta^2 / (pi/2 - theta)^2 m.
+  // Angles are capped at 89.5 deg, where the last term is already 0.8 m.
+  double axial_sigma_m(double z_m, double incidence_rad = 0.0) const;
+
+  // The step between neighbouring depth levels at depth z: z^2 / (f b) * disparity step.
+  double depth_step_m(double z_m) const {
+    return z_m * z_m / (ir_focal_px * baseline_m) * disparity_step_px;
   }
 };
 

@@ -103,7 +103,9 @@ StageSpec SyntheticSource::spec() {
       .param("noise", true,
              "Kinect v1 effects on; false: the exact depth rounded to mm (range limits apply).")
       .param("axial_noise_scale", 1.0,
-             "Factor on the axial noise sigma_z = 0.0012 + 0.0019 (z - 0.4)^2 m.",
+             "Factor on the axial noise sigma_z = 0.0012 + 0.0019 (z - 0.4)^2 + 0.0001 / sqrt(z) "
+             "theta^2 / (pi/2 - theta)^2 m (z in m, theta the incidence angle); the depth "
+             "delivered, quantised, has this sigma.",
              {.min = 0.0, .max = 100.0, .origin = "Nguyen, Izadi, Lovell 2012"})
       .param("disparity_step_px", 0.125,
              "Disparity resolution; depth is ir_focal_px * baseline_m / quantised disparity. "
@@ -122,11 +124,11 @@ StageSpec SyntheticSource::spec() {
              {.min = 0.0, .max = 1.0})
       .param("jump_min_m", 0.02, "Smallest depth difference between neighbours that is a jump.",
              {.unit = "m", .min = 0.0, .max = 10.0})
-      .param("grazing_start_deg", 75.0,
+      .param("grazing_start_deg", 80.0,
              "Incidence angle (camera or projector ray to the surface normal) from which pixels "
              "drop out; the chance grows linearly to 1 at grazing_end_deg.",
              {.unit = "deg", .min = 0.0, .max = 90.0})
-      .param("grazing_end_deg", 88.0, "Incidence angle from which no pixel is measured.",
+      .param("grazing_end_deg", 89.0, "Incidence angle from which no pixel is measured.",
              {.unit = "deg", .min = 0.0, .max = 90.0})
       .param("dropout_cell_px", 4.0,
              "Dropouts (beside jumps, at grazing angles) come in blobs of about this size: a "
