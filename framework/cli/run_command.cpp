@@ -2,15 +2,19 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "facet/framework/executor.hpp"
+#include "facet/framework/pipelined_executor.hpp"
 #include "facet/framework/run_report.hpp"
 #include "facet/framework/statistics.hpp"
+#include "facet/framework/trace_writer.hpp"
 #include "session.hpp"
 
 namespace facet::cli {
@@ -23,7 +27,34 @@ struct RunArgs {
   bool profile = false;
   bool quiet = false;
   std::filesystem::path json_file;
+  std::filesystem::path trace_file;
+  int threads = 0;  // 0: one per hardware thread
+  int in_flight = 0;
+  std::string executor = "auto";
+  std::string source_policy = "block";
+  std::int64_t stall_ms = 5000;
+  bool stall_abort = false;
 };
+
+// One frame at a time (the reference) or several in flight: `auto` picks the pipeline when
+// there is more than one thread to run it on.
+bool use_pipeline(const RunArgs& args, int threads) {
+  if (args.executor == "sequential") return false;
+  if (args.executor == "pipelined") return true;
+  return threads > 1;
+}
+
+RunStats run_graph(const RunArgs& args, const ValidatedGraph& graph, const RunOptions& options) {
+  const int threads = args.threads > 0
+                          ? args.threads
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (!use_pipeline(args, threads)) {
+    SequentialExecutor executor(graph);
+    return executor.run(options);
+  }
+  PipelinedExecutor executor(graph, PipelineOptions{threads, args.in_flight});
+  return executor.run(options);
+}
 
 // A one-line progress display on an interactive terminal, refreshed at most 10 times a second.
 class ProgressLine {
@@ -60,24 +91,39 @@ int run(const RunArgs& args) {
 
   RunStats stats;
   try {
-    SequentialExecutor executor(loaded->graph);
     ProgressLine progress(!args.quiet && isatty(STDERR_FILENO) == 1);
     RunOptions options;
     options.max_frames = args.frames;
+    options.record_calls = !args.trace_file.empty();
+    options.source_policy =
+        args.source_policy == "latest" ? SourcePolicy::latest : SourcePolicy::block;
     options.on_frame = [&](const FrameEvent& event) { progress.update(event); };
     options.on_warning = [&](const std::string& message) {
       progress.finish();
       std::cerr << message << '\n';
     };
-    stats = executor.run(options);
+    options.stall_after = std::chrono::milliseconds(args.stall_ms);
+    // Called from the watchdog's thread while the executor's threads keep running: it only
+    // prints, and ends the process when asked to, since a hung stage call cannot be stopped.
+    options.on_stall = [stall_abort = args.stall_abort](const StallReport& report) {
+      std::cerr << "\nwarning: stall: " << report.message << '\n' << std::flush;
+      if (stall_abort) {
+        std::cerr << "error: stopping the run (--stall-abort)" << std::endl;
+        std::_Exit(kRuntimeFailure);
+      }
+    };
+    stats = run_graph(args, loaded->graph, options);
   } catch (const RunError& e) {
     std::cerr << "\nerror: " << e.what() << '\n';
     return kRuntimeFailure;
   }
 
   if (!args.quiet) {
-    std::cerr << fmt::format("{}: {} frame(s), {:.2f} ms per frame (median)\n", loaded->graph.name,
-                             stats.frames, median(stats.frame_ms));
+    std::cerr << fmt::format(
+                     "{}: {} frame(s), {:.2f} ms per frame (median latency), {:.1f} frames/s",
+                     loaded->graph.name, stats.frames, median(stats.frame_ms),
+                     stats.throughput_fps())
+              << (stats.dropped > 0 ? fmt::format(", {} dropped", stats.dropped) : "") << '\n';
   }
   if (args.profile) write_profile_table(std::cout, stats);
   if (!args.json_file.empty()) {
@@ -85,6 +131,14 @@ int run(const RunArgs& args) {
     write_run_json(out, stats, loaded->graph.name, loaded->spec.variant);
     if (!out) {
       std::cerr << "error: cannot write " << args.json_file.string() << '\n';
+      return kRuntimeFailure;
+    }
+  }
+  if (!args.trace_file.empty()) {
+    std::ofstream out(args.trace_file);
+    write_chrome_trace(out, stats, loaded->graph.name);
+    if (!out) {
+      std::cerr << "error: cannot write " << args.trace_file.string() << '\n';
       return kRuntimeFailure;
     }
   }
@@ -104,6 +158,36 @@ void add_run_command(CLI::App& app, int& exit_code) {
                     "Print per-stage median and p95 time (ms) after the run");
   command->add_option("--json", args->json_file,
                       "Write run statistics (frames, per-stage and total median/p95 ms) as JSON");
+  command->add_option("--trace", args->trace_file,
+                      "Write a Chrome/Perfetto trace (one slice per stage call, per thread) as "
+                      "JSON; open it in chrome://tracing or ui.perfetto.dev");
+  command
+      ->add_option("--threads,-j", args->threads,
+                   "Threads that run stages (default: one per hardware thread); 1 runs one "
+                   "frame at a time")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--in-flight", args->in_flight,
+                   "Frames in the pipeline at once (default: twice the threads)")
+      ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--executor", args->executor,
+                   "sequential (one frame at a time, the reference), pipelined, or auto "
+                   "(pipelined with more than one thread)")
+      ->check(CLI::IsMember({"auto", "sequential", "pipelined"}));
+  command
+      ->add_option("--source-policy", args->source_policy,
+                   "When the pipeline is full: block (wait; recordings, nothing dropped) or latest "
+                   "(read on, the newest frame replaces a waiting one; live cameras)")
+      ->check(CLI::IsMember({"block", "latest"}));
+  command
+      ->add_option("--stall-ms", args->stall_ms,
+                   "Report a stage call that runs longer than this, naming node and frame "
+                   "(0: never)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_flag("--stall-abort", args->stall_abort,
+                    "End the run with exit code 1 when a stall is reported");
   command->add_flag("--quiet,-q", args->quiet, "No progress line and no summary");
   command->callback([args, &exit_code] { exit_code = run(*args); });
 }

@@ -45,6 +45,9 @@ void write_run_json(std::ostream& out, const RunStats& stats, const std::string&
   json.key("median_ms").value(total_median);
   json.key("p95_ms").value(percentile(stats.frame_ms, 95.0));
   json.key("fps").value(total_median > 0.0 ? 1000.0 / total_median : 0.0);
+  json.key("throughput_fps").value(stats.throughput_fps());
+  json.key("wall_ms").value(stats.wall_ms);
+  json.key("dropped").value(stats.dropped);
   json.end_object();
   json.end_object();
 }
@@ -69,6 +72,9 @@ void write_profile_table(std::ostream& out, const RunStats& stats) {
   out << fmt::format("{:<{}}  {:>6}  {:>10.3f}  {:>10.3f}\n", "total (per frame)",
                      id_width + stage_width + 2, stats.frames, total_median,
                      percentile(stats.frame_ms, 95.0));
+  out << fmt::format("throughput {:.1f} frames/s ({} frames in {:.0f} ms){}\n",
+                     stats.throughput_fps(), stats.frames, stats.wall_ms,
+                     stats.dropped > 0 ? fmt::format(", {} dropped", stats.dropped) : "");
 }
 
 }  // namespace facet

@@ -1,7 +1,10 @@
 #pragma once
-// The sequential executor: the reference way to run a graph. One frame at a time, nodes in
-// topological order, every stage call timed. Deterministic: the same graph on the same input gives
-// the same output, which is what other executors are checked against.
+// Running a graph. Two executors share these types:
+// - SequentialExecutor, the reference: one frame at a time, nodes in topological order. The same
+//   graph on the same input gives the same output, which is what other executors are checked
+//   against.
+// - PipelinedExecutor (pipelined_executor.hpp): several frames in flight on a fixed pool of
+//   threads, each stage run as its declared Concurrency allows; it writes the same outputs.
 
 #include <chrono>
 #include <cstdint>
@@ -26,15 +29,34 @@ class RunError : public std::runtime_error {
 struct NodeStats {
   std::string id;
   std::string stage;
-  std::vector<double> call_ms;  // one sample per frame in which the node ran
+  std::vector<double> call_ms;  // one sample per frame in which the node ran, in frame order
   std::int64_t skipped = 0;     // frames in which a required input was empty
   std::map<std::string, std::vector<double>> metrics;
 };
 
+// One stage call, for traces: which node ran which frame on which thread, and when.
+struct CallRecord {
+  std::size_t node = 0;  // index into RunStats::nodes
+  std::int64_t frame = 0;
+  int thread = 0;         // 0 = the thread that called run(), then the pool's workers 1..n-1
+  double start_ms = 0.0;  // since the run started
+  double duration_ms = 0.0;
+};
+
 struct RunStats {
-  std::int64_t frames = 0;
+  std::int64_t frames = 0;       // frames that went through the whole graph
   std::vector<NodeStats> nodes;  // in execution order
-  std::vector<double> frame_ms;  // wall time of each frame through the whole graph
+  // Latency of each frame, in frame order: from its first source call to the end of its last
+  // stage call (with one frame at a time this is the frame's wall time).
+  std::vector<double> frame_ms;
+  double wall_ms = 0.0;           // the whole run, from opening the first stage to closing the last
+  std::int64_t dropped = 0;       // frames a `latest` source replaced before they were processed
+  std::vector<CallRecord> calls;  // only with RunOptions::record_calls, in no particular order
+
+  // Frames per second over the whole run (throughput), 0 before any frame.
+  double throughput_fps() const {
+    return wall_ms > 0.0 ? 1000.0 * static_cast<double>(frames) / wall_ms : 0.0;
+  }
 };
 
 struct FrameEvent {
@@ -43,12 +65,38 @@ struct FrameEvent {
   double frame_ms;
 };
 
+// A stage call that has been running for longer than RunOptions::stall_after.
+struct StallReport {
+  std::string node;   // node id
+  std::string stage;  // stage name
+  std::int64_t frame;
+  double held_ms;       // how long the call has been running
+  std::string message;  // "node 'N' (stage) has held frame F for T ms", for printing
+};
+
+// What a source does when the pipeline is full (PipelinedExecutor only; one frame at a time
+// nothing ever waits).
+enum class SourcePolicy {
+  block,   // wait for room: recordings, nothing is dropped
+  latest,  // keep reading; the newest frame replaces a waiting stale one, which is counted as
+           // dropped: live cameras, where an old frame is worth less than a new one
+};
+
 struct RunOptions {
   std::int64_t max_frames = -1;  // < 0: until a source ends the stream
-  // Called after every frame (progress display); may be empty.
+  // Called after every frame, in frame order (progress display); may be empty.
   std::function<void(const FrameEvent&)> on_frame;
   // Receives stage warnings already prefixed with node and frame; may be empty (then dropped).
   std::function<void(const std::string&)> on_warning;
+  // Keep one CallRecord per stage call in RunStats::calls (for `facet run --trace`).
+  bool record_calls = false;
+  // A stage call running longer than this is reported once to on_stall (zero: never). The call
+  // is not interrupted: a stage cannot be stopped safely from outside, so what to do (wait, or
+  // end the process) is the caller's choice.
+  std::chrono::milliseconds stall_after{0};
+  std::function<void(const StallReport&)> on_stall;
+  // Every source of a graph shares its frames, so they share one policy.
+  SourcePolicy source_policy = SourcePolicy::block;
 };
 
 class SequentialExecutor {

@@ -1,0 +1,225 @@
+#pragma once
+// Stages for the pipelined executor's tests. They report what they saw to one thread-safe probe
+// (stages only see their Params), and detect for themselves what must never happen: a serial
+// stage called for two frames at once, or out of order.
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "facet/framework/registry.hpp"
+#include "facet/stage.hpp"
+#include "facet/types/images.hpp"
+
+namespace facet::test {
+
+struct PipelineProbe {
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::map<std::string, std::vector<std::int64_t>> frames;  // node id → frames, in call order
+  std::map<std::string, int> instances;                     // stage name → instances created
+  std::map<std::string, int> most_at_once;                  // node id → most concurrent calls
+  std::vector<std::string> overlaps;                        // serial calls that overlapped
+  std::vector<std::string> events;                          // "open id", "close id"
+  std::int64_t source_calls = 0;
+
+  void reset() {
+    const std::lock_guard lock(mutex);
+    frames.clear();
+    instances.clear();
+    most_at_once.clear();
+    overlaps.clear();
+    events.clear();
+    source_calls = 0;
+  }
+};
+
+inline PipelineProbe& pipeline_probe() {
+  static PipelineProbe probe;
+  return probe;
+}
+
+// Counts the calls of one node in progress; reports the most seen at once.
+class CallCounter {
+ public:
+  explicit CallCounter(std::atomic<int>& in_call, const std::string& node) : in_call_(in_call) {
+    const int now = ++in_call_;
+    auto& probe = pipeline_probe();
+    const std::lock_guard lock(probe.mutex);
+    probe.most_at_once[node] = std::max(probe.most_at_once[node], now);
+  }
+  ~CallCounter() { --in_call_; }
+  CallCounter(const CallCounter&) = delete;
+  CallCounter& operator=(const CallCounter&) = delete;
+
+ private:
+  std::atomic<int>& in_call_;
+};
+
+inline void record_frame(const ProcessContext& ctx) {
+  auto& probe = pipeline_probe();
+  const std::lock_guard lock(probe.mutex);
+  probe.frames[ctx.node_id()].push_back(ctx.frame_index());
+  probe.changed.notify_all();
+}
+
+inline void count_instance(const std::string& stage) {
+  auto& probe = pipeline_probe();
+  const std::lock_guard lock(probe.mutex);
+  ++probe.instances[stage];
+}
+
+inline void record_event(const std::string& event) {
+  auto& probe = pipeline_probe();
+  const std::lock_guard lock(probe.mutex);
+  probe.events.push_back(event);
+}
+
+// Emits `frames` 4x4 depth images holding frame index + 1, then ends the stream.
+class CountingSource final : public Stage {
+ public:
+  static StageSpec spec() {
+    return StageSpec("ptest.source", "Emits `frames` small depth images, then ends.")
+        .output<DepthImage>("depth", "4x4 pixels holding the frame index + 1.")
+        .param("frames", 8, "Frames to emit.", {.min = 0})
+        .param("gap_every", 0, "Leave the output empty every n-th frame (0 = never).", {.min = 0})
+        .concurrency(Concurrency::serial);
+  }
+  explicit CountingSource(const Params& p)
+      : frames_(p.get_int("frames")), gap_every_(p.get_int("gap_every")) {}
+  void open(const OpenContext& ctx) override { record_event("open " + ctx.node_id); }
+  void close() override { record_event("close source"); }
+  void process(ProcessContext& ctx) override {
+    {
+      auto& probe = pipeline_probe();
+      const std::lock_guard lock(probe.mutex);
+      ++probe.source_calls;
+      probe.changed.notify_all();
+    }
+    if (ctx.frame_index() >= frames_) {
+      ctx.end_of_stream();
+      return;
+    }
+    record_frame(ctx);
+    if (gap_every_ > 0 && (ctx.frame_index() + 1) % gap_every_ == 0) return;
+    DepthImage image;
+    image.frame.index = ctx.frame_index();
+    image.frame.stem = "f" + std::to_string(ctx.frame_index());
+    image.depth = cv::Mat(4, 4, CV_16UC1, cv::Scalar(static_cast<double>(ctx.frame_index() + 1)));
+    ctx.output("depth", std::move(image));
+  }
+
+ private:
+  std::int64_t frames_;
+  std::int64_t gap_every_;
+};
+
+// Passes its input on after `work_us` of busy work; records the frames it saw and flags a call
+// that overlaps another of the same instance set. Declared with the concurrency its name says.
+template <Concurrency kMode>
+class PassStage final : public Stage {
+ public:
+  static std::string name() { return std::string("ptest.") + std::string(to_string(kMode)); }
+  static StageSpec spec() {
+    return StageSpec(name(), "Forwards its input; watches how it is called.")
+        .template input<DepthImage>("depth", "Anything.")
+        .template output<DepthImage>("depth", "The input, unchanged.")
+        .param("work_us", 200, "Busy time per call, so that calls get the chance to overlap.",
+               {.unit = "us", .min = 0})
+        .param("fail_at", -1, "Throw a StageError at this frame (-1 = never).", {.min = -1})
+        .concurrency(kMode);
+  }
+  explicit PassStage(const Params& p)
+      : work_us_(p.get_int("work_us")), fail_at_(p.get_int("fail_at")) {
+    count_instance(name());
+  }
+  void open(const OpenContext& ctx) override { record_event("open " + ctx.node_id); }
+  void close() override { record_event("close " + name()); }
+  void process(ProcessContext& ctx) override {
+    const CallCounter counter(in_call_, ctx.node_id());
+    if (kMode == Concurrency::serial || kMode == Concurrency::clonable) {
+      // One instance never sees two frames at once under these two declarations.
+      if (instance_busy_.exchange(true)) {
+        const std::lock_guard lock(pipeline_probe().mutex);
+        pipeline_probe().overlaps.push_back(ctx.node_id() + " frame " +
+                                            std::to_string(ctx.frame_index()));
+      }
+    }
+    if (ctx.frame_index() == fail_at_) {
+      instance_busy_ = false;
+      throw StageError("deliberate failure");
+    }
+    const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(work_us_);
+    while (std::chrono::steady_clock::now() < until)
+      std::this_thread::yield();
+    record_frame(ctx);
+    ctx.output_packet("depth", ctx.input_packet("depth"));
+    instance_busy_ = false;
+  }
+
+ private:
+  std::int64_t work_us_;
+  std::int64_t fail_at_;
+  std::atomic<bool> instance_busy_{false};
+  // Calls of all instances of this stage type (one node per type in each test).
+  static inline std::atomic<int> in_call_{0};
+};
+
+// A sink that declares itself reentrant: the executor still hands it frames in order. With
+// `hold_until_calls` > 0 its first call waits until the source has been called that often, so
+// that a `latest` source has to read past a full pipeline.
+class OrderedSink final : public Stage {
+ public:
+  static StageSpec spec() {
+    return StageSpec("ptest.sink", "Records the frames it receives.")
+        .input<DepthImage>("depth", "Anything.")
+        .param("hold_until_calls", 0, "Wait in the first call for this many source calls.",
+               {.min = 0})
+        .param("stall_at", -1, "Block at this frame until a stall has been reported.", {.min = -1})
+        .concurrency(Concurrency::reentrant);
+  }
+  explicit OrderedSink(const Params& p)
+      : hold_until_calls_(p.get_int("hold_until_calls")), stall_at_(p.get_int("stall_at")) {}
+  void open(const OpenContext& ctx) override { record_event("open " + ctx.node_id); }
+  void close() override { record_event("close sink"); }
+  void process(ProcessContext& ctx) override {
+    const CallCounter counter(in_call_, ctx.node_id());
+    auto& probe = pipeline_probe();
+    if (hold_until_calls_ > 0 && !held_) {
+      held_ = true;
+      std::unique_lock lock(probe.mutex);
+      probe.changed.wait(lock, [&] { return probe.source_calls >= hold_until_calls_; });
+    }
+    if (ctx.frame_index() == stall_at_) {
+      std::unique_lock lock(probe.mutex);
+      // Released by the test's stall handler; the long timeout only keeps a broken watchdog from
+      // hanging the suite.
+      probe.changed.wait_for(lock, std::chrono::seconds(60), [&] { return stall_released; });
+    }
+    record_frame(ctx);
+  }
+
+  static inline bool stall_released = false;  // guarded by the probe's mutex
+
+ private:
+  std::int64_t hold_until_calls_;
+  std::int64_t stall_at_;
+  bool held_ = false;
+  static inline std::atomic<int> in_call_{0};
+};
+
+inline void add_pipeline_test_stages(Registry& registry) {
+  registry.add<CountingSource>();
+  registry.add<PassStage<Concurrency::serial>>();
+  registry.add<PassStage<Concurrency::clonable>>();
+  registry.add<PassStage<Concurrency::reentrant>>();
+  registry.add<OrderedSink>();
+}
+
+}  // namespace facet::test
