@@ -64,6 +64,20 @@ TEST(SyntheticSource, FramesCarryIndexStemTimestampAndKinectIntrinsics) {
   EXPECT_TRUE(runner.at_end_of_stream()) << "frames=3 ends after the third frame";
 }
 
+TEST(SyntheticSource, ZeroFramesNeverEndsTheStream) {
+  ParamMap params = preset_params("separated3", 1);
+  params["frames"] = std::int64_t{0};
+  params["width"] = std::int64_t{160};
+  params["height"] = std::int64_t{120};
+  params["min_visible_px"] = std::int64_t{20};
+  SyntheticRunner runner(params);
+  for (int i = 0; i < 25; ++i) {
+    runner.run();
+    ASSERT_FALSE(runner.at_end_of_stream()) << "frame " << i;
+    EXPECT_EQ(runner.output<facet::DepthImage>("depth").frame.index, i);
+  }
+}
+
 TEST(SyntheticSource, ResolutionScalesTheFocalLength) {
   ParamMap params = preset_params("separated3", 1);
   params["width"] = std::int64_t{320};
