@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "io/run_deflate.hpp"
+
 namespace facet::io::png {
 namespace {
 
@@ -46,7 +48,8 @@ void append_u32(std::vector<std::uint8_t>& out, std::uint32_t value) {
 void append_chunk_header(std::vector<std::uint8_t>& out, std::string_view type,
                          std::size_t length) {
   append_u32(out, static_cast<std::uint32_t>(length));
-  for (const char c : type) out.push_back(static_cast<std::uint8_t>(c));
+  for (const char c : type)
+    out.push_back(static_cast<std::uint8_t>(c));
 }
 void append_crc(std::vector<std::uint8_t>& out, std::size_t chunk_type_offset) {
   const std::size_t length = out.size() - chunk_type_offset;
@@ -231,6 +234,18 @@ cv::Mat unpack(const Header& header, const std::uint8_t* rows, std::size_t strid
   return image;
 }
 
+std::vector<std::uint8_t> zlib_compress(std::span<const std::uint8_t> data, int level) {
+  const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+      libdeflate_alloc_compressor(std::clamp(level, 1, 12)));
+  if (!compressor) throw std::bad_alloc();
+  std::vector<std::uint8_t> out(libdeflate_zlib_compress_bound(compressor.get(), data.size()));
+  const std::size_t size =
+      libdeflate_zlib_compress(compressor.get(), data.data(), data.size(), out.data(), out.size());
+  if (size == 0) throw std::runtime_error("png::encode: deflate output exceeded its bound");
+  out.resize(size);
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> encode(const cv::Mat& image, const EncodeOptions& options) {
@@ -254,14 +269,14 @@ std::vector<std::uint8_t> encode(const cv::Mat& image, const EncodeOptions& opti
     std::swap(current, previous);
   }
 
-  const std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
-      libdeflate_alloc_compressor(std::clamp(options.level, 1, 12)));
-  if (!compressor) throw std::bad_alloc();
-  const std::size_t bound = libdeflate_zlib_compress_bound(compressor.get(), filtered.size());
+  const std::vector<std::uint8_t> zlib = options.deflate == Deflate::runs
+                                             ? zlib_compress_runs(filtered)
+                                             : zlib_compress(filtered, options.level);
 
   std::vector<std::uint8_t> out;
-  out.reserve(kSignature.size() + 25 + 12 + bound + 12);
-  for (const std::uint8_t byte : kSignature) out.push_back(byte);
+  out.reserve(kSignature.size() + 25 + 12 + zlib.size() + 12);
+  for (const std::uint8_t byte : kSignature)
+    out.push_back(byte);
 
   append_chunk_header(out, "IHDR", 13);
   const std::size_t ihdr_type = out.size() - 4;
@@ -274,18 +289,10 @@ std::vector<std::uint8_t> encode(const cv::Mat& image, const EncodeOptions& opti
   out.push_back(0);  // no interlace
   append_crc(out, ihdr_type);
 
-  // IDAT: compress straight into the output's reserved tail, then fill in the length.
-  const std::size_t idat_length_at = out.size();
-  append_chunk_header(out, "IDAT", 0);
+  append_chunk_header(out, "IDAT", zlib.size());
   const std::size_t idat_type = out.size() - 4;
-  out.resize(out.size() + bound);
-  const std::size_t compressed = libdeflate_zlib_compress(
-      compressor.get(), filtered.data(), filtered.size(), out.data() + idat_type + 4, bound);
-  if (compressed == 0) throw std::runtime_error("png::encode: deflate output exceeded its bound");
-  out.resize(idat_type + 4 + compressed);
-  for (int byte = 0; byte < 4; ++byte)
-    out[idat_length_at + static_cast<std::size_t>(byte)] =
-        static_cast<std::uint8_t>(compressed >> (24 - 8 * byte));
+  out.resize(out.size() + zlib.size());
+  std::memcpy(out.data() + idat_type + 4, zlib.data(), zlib.size());
   append_crc(out, idat_type);
 
   append_chunk_header(out, "IEND", 0);

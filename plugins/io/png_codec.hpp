@@ -28,6 +28,12 @@ class FormatError : public std::runtime_error {
 // The row filters of the PNG specification (section 9.2).
 enum class Filter : std::uint8_t { none = 0, sub = 1, up = 2, average = 3, paeth = 4 };
 
+// How the filtered rows are deflated.
+enum class Deflate : std::uint8_t {
+  general,  // libdeflate: any image
+  runs,     // only runs of one byte (run_deflate.hpp): label and mask images, several times faster
+};
+
 struct EncodeOptions {
   // Sub suits what facet writes: label and edge images are runs of equal values, depth and
   // overlays change smoothly along a row. Measured on the mOSD frames in docs/performance.md.
@@ -35,6 +41,7 @@ struct EncodeOptions {
   // libdeflate's compression level, 1 to 12. Not 1: libdeflate 1.14's level 1 is 2x slower than
   // level 2 on long runs of one value (label images, overlay backgrounds), at the same size.
   int level = 2;
+  Deflate deflate = Deflate::general;
 };
 
 // Encodes a CV_8UC1, CV_16UC1 or CV_8UC3 (BGR, stored as RGB as PNG wants) image.

@@ -101,9 +101,10 @@ cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics
   return labels;
 }
 
-void write_png(const std::filesystem::path& file, const cv::Mat& image) {
+void write_png(const std::filesystem::path& file, const cv::Mat& image,
+               const png::EncodeOptions& options) {
   CV_Assert(image.type() == CV_16UC1 || image.type() == CV_8UC1 || image.type() == CV_8UC3);
-  const std::vector<std::uint8_t> bytes = png::encode(image);
+  const std::vector<std::uint8_t> bytes = png::encode(image, options);
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(bytes.data()),
             static_cast<std::streamsize>(bytes.size()));

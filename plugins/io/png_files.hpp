@@ -6,6 +6,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "facet/types/frame.hpp"
+#include "io/png_codec.hpp"
 
 namespace facet::io {
 
@@ -18,6 +19,8 @@ cv::Mat read_depth_png(const std::filesystem::path& file, const CameraIntrinsics
 cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics& camera);
 
 // Writes a CV_16UC1 (16-bit), CV_8UC1 (8-bit grey) or CV_8UC3 (BGR colour) image as a PNG.
-void write_png(const std::filesystem::path& file, const cv::Mat& image);
+// Label images are written faster with {.deflate = png::Deflate::runs}.
+void write_png(const std::filesystem::path& file, const cv::Mat& image,
+               const png::EncodeOptions& options = {});
 
 }  // namespace facet::io

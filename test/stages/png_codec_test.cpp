@@ -45,6 +45,7 @@ Bytes opencv_encode(const cv::Mat& image, std::vector<int> params = {}) {
 struct Case {
   int type;
   png::Filter filter;
+  png::Deflate deflate = png::Deflate::general;
 };
 
 class RoundTrip : public testing::TestWithParam<Case> {};
@@ -52,7 +53,8 @@ class RoundTrip : public testing::TestWithParam<Case> {};
 TEST_P(RoundTrip, ReadsBackExactlyThroughItselfAndOpenCV) {
   for (const cv::Size size : {cv::Size(1, 1), cv::Size(7, 5), cv::Size(64, 48), cv::Size(641, 3)}) {
     const cv::Mat image = test_image(GetParam().type, size.width, size.height, 11);
-    const Bytes bytes = png::encode(image, {.filter = GetParam().filter});
+    const Bytes bytes =
+        png::encode(image, {.filter = GetParam().filter, .deflate = GetParam().deflate});
 
     const std::optional<cv::Mat> ours = png::decode(bytes);
     ASSERT_TRUE(ours.has_value());
@@ -69,7 +71,11 @@ INSTANTIATE_TEST_SUITE_P(
                     Case{CV_16UC1, png::Filter::sub}, Case{CV_16UC1, png::Filter::up},
                     Case{CV_16UC1, png::Filter::average}, Case{CV_16UC1, png::Filter::paeth},
                     Case{CV_8UC3, png::Filter::sub}, Case{CV_8UC3, png::Filter::average},
-                    Case{CV_8UC3, png::Filter::paeth}));
+                    Case{CV_8UC3, png::Filter::paeth},
+                    Case{CV_8UC1, png::Filter::sub, png::Deflate::runs},
+                    Case{CV_16UC1, png::Filter::sub, png::Deflate::runs},
+                    Case{CV_16UC1, png::Filter::up, png::Deflate::runs},
+                    Case{CV_8UC3, png::Filter::paeth, png::Deflate::runs}));
 
 TEST(PngCodec, ReadsWhatOpenCVWritesWithEveryCompressionLevel) {
   // libpng picks a filter per row, so these files mix all five.
@@ -103,6 +109,7 @@ TEST(PngCodec, CompressesFlatImages) {
   cv::Mat labels(480, 640, CV_16UC1, cv::Scalar(0));
   labels(cv::Rect(100, 100, 200, 150)).setTo(3);
   EXPECT_LT(png::encode(labels).size(), 10'000u);
+  EXPECT_LT(png::encode(labels, {.deflate = png::Deflate::runs}).size(), 10'000u);
 }
 
 TEST(PngCodec, HandsOtherKindsOfPngBack) {
