@@ -115,7 +115,7 @@ StageSpec SyntheticSource::spec() {
              {.unit = "px", .min = 1.0, .max = 100000.0, .origin = "Kinect v1 literature"})
       .param("baseline_m", 0.075,
              "Projector offset to the camera's right (+x): shadows fall on the objects' left; "
-             "negative = to the left.",
+             "negative = to the left; at least 1 mm either way.",
              {.unit = "m", .min = -1.0, .max = 1.0, .origin = "Kinect v1: 7.5 cm"})
       .param("shadows", true, "Surfaces the projector does not light get no measurement.")
       .param("jump_dropout", 0.5,
@@ -183,6 +183,11 @@ SyntheticSource::SyntheticSource(const Params& params)
     throw StageError("param grazing_end_deg=" + format_number(noise_.grazing_end_deg) +
                      " is below grazing_start_deg=" + format_number(noise_.grazing_start_deg) +
                      ": the dropout chance must grow with the angle");
+  }
+  if (noise_.baseline_m < 0.001) {
+    throw StageError("param baseline_m=" + format_number(params.get_double("baseline_m")) +
+                     ": a structured-light camera measures depth by the disparity between camera "
+                     "and projector, which needs a baseline of at least 1 mm");
   }
   if (noise_.min_depth_m >= noise_.max_depth_m) {
     throw StageError("param min_depth_m=" + format_number(noise_.min_depth_m) +

@@ -238,6 +238,7 @@ TEST(SyntheticSource, BadParametersAreClearErrors) {
       std::string::npos);
   EXPECT_NE(message_of({{"min_depth_m", 3.0}, {"max_depth_m", 2.0}}).find("min_depth_m"),
             std::string::npos);
+  EXPECT_NE(message_of({{"baseline_m", 0.0}}).find("baseline_m"), std::string::npos);
   // A camera so far away that no object shows enough pixels: the layout cannot be satisfied.
   const std::string far =
       message_of({{"camera_distance_m", 4.5}, {"min_visible_px", std::int64_t{20000}}});
