@@ -44,8 +44,9 @@ StageSpec SyntheticSource::spec() {
       "Boxes, rounded boxes, cylinders (upright and lying) and spheres on a table (optionally "
       "with a wall behind it), ray-cast exactly and then measured with a Kinect v1 noise model: "
       "range limits, projector shadows, dropouts beside depth jumps and at grazing angles, "
-      "axial noise growing with the square of the distance and depth from disparity quantised "
-      "to 1/8 px (docs/synthetic.md). Presets of increasing complexity follow the levels of "
+      "axial noise growing with the square of the distance and with the incidence angle, and "
+      "depth from disparity quantised to 1/8 px (docs/synthetic.md). Presets of increasing "
+      "complexity follow the levels of "
       "the paper's Table II. A static scene (the default) is the same layout in every frame with "
       "independent noise, for stability measurements. Everything is deterministic for a seed. "
       "Reports the metrics valid_ratio (measured pixels / all) and objects_visible.");
