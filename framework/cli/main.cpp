@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   facet::cli::add_inspect_command(app, exit_code);
   facet::cli::add_dot_command(app, exit_code);
   facet::cli::add_doctor_command(app, exit_code);
+  facet::cli::add_compare_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,261 @@
+// facet compare: variants of one graph merged into one run, timed fairly, reported side by side.
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "compare_html.hpp"
+#include "exit_codes.hpp"
+#include "facet/framework/compare_report.hpp"
+#include "facet/framework/compare_summary.hpp"
+#include "facet/framework/executor.hpp"
+#include "facet/framework/graph_merge.hpp"
+#include "report_images.hpp"
+#include "session.hpp"
+
+namespace facet::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The name that stands for the graph as written, without any variant.
+constexpr const char* kBaseVariant = "base";
+// The graph parameter that, by the convention of the bundled graphs, roots every sink's output.
+constexpr const char* kOutputParam = "output";
+
+struct CompareArgs {
+  PluginOptions plugins;
+  fs::path graph_file;
+  std::string variants;
+  std::vector<std::string> params;
+  std::vector<std::string> sets;
+  std::int64_t frames = -1;
+  std::int64_t warmup = 2;
+  fs::path out_dir;
+  int images = 3;
+  int image_width = 320;
+  bool quiet = false;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    const auto first = item.find_first_not_of(' ');
+    const auto last = item.find_last_not_of(' ');
+    if (first != std::string::npos) items.push_back(item.substr(first, last - first + 1));
+  }
+  return items;
+}
+
+bool parse_assignments(const std::vector<std::string>& texts, const char* option,
+                       std::vector<std::pair<std::string, std::string>>& out) {
+  for (const auto& text : texts) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      std::cerr << "error: " << option << " expects name=value, got '" << text << "'\n";
+      return false;
+    }
+    out.emplace_back(text.substr(0, eq), text.substr(eq + 1));
+  }
+  return true;
+}
+
+bool is_sink(const Registry& registry, const NodeSpec& node) {
+  const StageEntry* entry = registry.find(node.stage);
+  return entry != nullptr && entry->spec.outputs().empty() && !entry->spec.inputs().empty();
+}
+
+bool is_under(const fs::path& path, const fs::path& dir) {
+  const std::string p = path.lexically_normal().generic_string();
+  const std::string d = dir.lexically_normal().generic_string();
+  return p.size() >= d.size() && p.compare(0, d.size(), d) == 0 &&
+         (p.size() == d.size() || p[d.size()] == '/');
+}
+
+// A sink whose `dir` is not below the variant's folder (the graph does not root it in
+// ${output}) writes to <variant folder>/<node id> instead, so that variants never share files.
+void keep_outputs_apart(GraphSpec& spec, const Registry& registry, const fs::path& variant_dir) {
+  for (auto& node : spec.nodes) {
+    if (!is_sink(registry, node)) continue;
+    for (auto& param : node.params) {
+      if (param.name == "dir" && !is_under(param.text, variant_dir)) {
+        param.text = (variant_dir / node.id).generic_string();
+      }
+    }
+  }
+}
+
+bool write_file(const fs::path& file, const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(file, std::ios::binary);
+  write(out);
+  if (!out) {
+    std::cerr << "error: cannot write " << file.string() << '\n';
+    return false;
+  }
+  return true;
+}
+
+int compare(const CompareArgs& args) {
+  LoadOptions base_options;
+  std::vector<std::pair<std::string, std::string>> params;
+  if (!parse_assignments(args.params, "--param", params) ||
+      !parse_assignments(args.sets, "--set", base_options.sets)) {
+    return kUsage;
+  }
+  for (const auto& [name, value] : params)
+    base_options.params[name] = value;
+
+  // The graph as written: its variants, its params and where its plugins are.
+  Diagnostics diagnostics;
+  const GraphSpec base = load_graph_file(args.graph_file, base_options, diagnostics);
+  if (diagnostics.has_errors()) {
+    diagnostics.print(std::cerr);
+    return kInvalidGraph;
+  }
+  std::vector<std::string> names =
+      args.variants.empty() ? base.variants : split_list(args.variants);
+  if (names.empty()) {
+    std::cerr << "error: " << args.graph_file.string()
+              << " defines no variants; name what to compare with --variants (e.g. "
+                 "--variants base,other after adding a variant 'other')\n";
+    return kUsage;
+  }
+  const fs::path out_dir =
+      args.out_dir.empty() ? fs::path("out/compare") / base.name : args.out_dir;
+  const Registry registry = load_registry(args.plugins, base.plugin_paths);
+
+  std::vector<VariantGraph> variants;
+  for (const auto& name : names) {
+    const bool is_base =
+        name == kBaseVariant &&
+        std::find(base.variants.begin(), base.variants.end(), name) == base.variants.end();
+    LoadOptions options = base_options;
+    options.variant = is_base ? "" : name;
+    const fs::path variant_dir = out_dir / name;
+    if (base.params.count(kOutputParam) > 0) {
+      options.params[kOutputParam] = variant_dir.generic_string();
+    }
+    GraphSpec spec = load_graph_file(args.graph_file, options, diagnostics);
+    keep_outputs_apart(spec, registry, variant_dir);
+    variants.push_back({name, std::move(spec)});
+  }
+  if (diagnostics.has_errors()) {
+    diagnostics.print(std::cerr);
+    if (std::find(base.variants.begin(), base.variants.end(), kBaseVariant) == base.variants.end())
+      std::cerr << "note: '" << kBaseVariant << "' names the graph without any variant\n";
+    return kInvalidGraph;
+  }
+
+  MergedGraph merged;
+  try {
+    MergeOptions merge_options;
+    merge_options.keep_per_variant = [&](const NodeSpec& node) { return is_sink(registry, node); };
+    merged = merge_variants(variants, merge_options);
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "error: --variants: " << error.what() << '\n';
+    return kUsage;
+  }
+  const ValidatedGraph graph = validate_graph(merged.spec, registry, diagnostics);
+  diagnostics.print(std::cerr);
+  if (diagnostics.has_errors()) {
+    const bool plugin_failed = !registry.failures().empty();
+    return plugin_failed ? kPluginFailure : kInvalidGraph;
+  }
+
+  // One frame at a time: no variant's stage competes with another's for a core, and every
+  // stage call of a frame sees the same caches and clock state as its neighbours.
+  RunStats stats;
+  try {
+    RunOptions options;
+    options.max_frames = args.frames;
+    options.record_calls = true;
+    options.on_warning = [](const std::string& message) { std::cerr << message << '\n'; };
+    SequentialExecutor executor(graph);
+    stats = executor.run(options);
+  } catch (const RunError& error) {
+    std::cerr << "error: " << error.what() << '\n';
+    return kRuntimeFailure;
+  }
+  if (stats.frames <= args.warmup) {
+    std::cerr << fmt::format(
+        "warning: {} frame(s) run, all of them warm-up (--warmup {}): no time is reported\n",
+        stats.frames, args.warmup);
+  }
+
+  const CompareSummary summary = summarize_comparison(merged, graph, stats, args.warmup);
+  write_compare_table(std::cout, summary);
+
+  std::error_code error;
+  fs::create_directories(out_dir, error);
+  if (error) {
+    std::cerr << "error: cannot create " << out_dir.string() << ": " << error.message() << '\n';
+    return kRuntimeFailure;
+  }
+  std::vector<std::pair<std::string, fs::path>> variant_dirs;
+  for (const auto& name : names)
+    variant_dirs.emplace_back(name, out_dir / name);
+  const auto images = collect_variant_images(variant_dirs, args.images, args.image_width);
+  const bool written = write_file(out_dir / "compare.json",
+                                  [&](std::ostream& out) { write_compare_json(out, summary); }) &&
+                       write_file(out_dir / "compare.csv",
+                                  [&](std::ostream& out) { write_compare_csv(out, summary); }) &&
+                       write_file(out_dir / "report.html", [&](std::ostream& out) {
+                         write_compare_html(out, summary, images);
+                       });
+  if (!written) return kRuntimeFailure;
+  if (!args.quiet) {
+    std::cerr << fmt::format(
+        "\nwrote {0}/compare.json, compare.csv and report.html; each "
+        "variant's own outputs are in {0}/<variant>/\n",
+        out_dir.generic_string());
+  }
+  return kOk;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CompareArgs>();
+  CLI::App* command = app.add_subcommand(
+      "compare",
+      "Run variants of a graph side by side (shared nodes once) and report time, metrics and "
+      "images");
+  command->add_option("graph", args->graph_file, "Graph file (YAML) that defines the variants")
+      ->required();
+  command->add_option("--variants", args->variants,
+                      "Variants to compare, comma-separated ('base' = the graph without a "
+                      "variant); default: every variant of the file");
+  command->add_option("--frames,-n", args->frames, "Stop after N frames")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--warmup", args->warmup, "Leading frames left out of the timing")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--out,-o", args->out_dir,
+                      "Folder for compare.json, compare.csv, report.html and one sub-folder of "
+                      "outputs per variant (default: out/compare/<graph name>)");
+  command->add_option("--images", args->images, "Frames whose images go into the report")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command
+      ->add_option("--image-width", args->image_width,
+                   "Width the report's images are shrunk to at most (pixels)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--param,-p", args->params,
+                      "Override a graph parameter for every variant: name=value (repeatable; "
+                      "'output' is set per variant)");
+  command->add_option("--set,-s", args->sets,
+                      "Override a node parameter for every variant: node.param=value "
+                      "(repeatable, applied after the variant)");
+  add_plugin_options(*command, args->plugins);
+  command->add_flag("--quiet,-q", args->quiet, "Only the table");
+  command->callback([args, &exit_code] { exit_code = compare(*args); });
+}
+
+}  // namespace facet::cli

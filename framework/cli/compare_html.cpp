@@ -1,0 +1,249 @@
+#include "compare_html.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <string>
+
+namespace facet::cli {
+namespace {
+
+constexpr const char* kStyle = R"(body{font-family:sans-serif;margin:1.5em;color:#222}
+table{border-collapse:collapse;margin:.5em 0 1.5em}
+th,td{border:1px solid #ccc;padding:.25em .6em;text-align:right}
+th:first-child,td:first-child{text-align:left}
+th{background:#f2f2f2}
+td.shared{color:#777}
+.images td,.images th{text-align:center;vertical-align:top}
+.images img{display:block;max-width:320px;image-rendering:pixelated}
+svg text{font-size:12px}
+)";
+
+// Fixed colours per variant (first ten; then they repeat), shared by every plot.
+const char* colour(std::size_t index) {
+  static constexpr const char* kColours[] = {"#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2",
+                                             "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
+  return kColours[index % 10];
+}
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+struct Bar {
+  std::string label;
+  std::vector<double> values;  // one per variant; negative = none
+};
+
+// Grouped horizontal bars: one group per label, one bar per variant.
+void write_bar_chart(std::ostream& out, const std::string& title, const std::string& unit,
+                     const std::vector<Bar>& bars, const CompareSummary& summary) {
+  const std::size_t variants = summary.variants.size();
+  double largest = 0.0;
+  for (const auto& bar : bars)
+    for (const double value : bar.values)
+      largest = std::max(largest, value);
+  if (bars.empty() || largest <= 0.0) return;
+  constexpr int kLabelWidth = 170;
+  constexpr int kPlotWidth = 460;
+  constexpr int kBarHeight = 12;
+  const int group_height = static_cast<int>(variants) * kBarHeight + 10;
+  const int legend_height = 18;
+  const int height = legend_height + static_cast<int>(bars.size()) * group_height + 10;
+  out << "<h3>" << escape(title) << "</h3>\n";
+  out << fmt::format(R"(<svg class="chart" xmlns="http://www.w3.org/2000/svg" width="{}" )"
+                     R"(height="{}" role="img" aria-label="{}">)",
+                     kLabelWidth + kPlotWidth + 80, height, escape(title))
+      << '\n';
+  for (std::size_t v = 0; v < variants; ++v) {
+    const int x = kLabelWidth + static_cast<int>(v) * 90;
+    out << fmt::format(R"(<rect x="{}" y="2" width="10" height="10" fill="{}"/>)"
+                       R"(<text x="{}" y="11">{}</text>)",
+                       x, colour(v), x + 14, escape(summary.variants[v].name))
+        << '\n';
+  }
+  for (std::size_t b = 0; b < bars.size(); ++b) {
+    const int top = legend_height + static_cast<int>(b) * group_height;
+    out << fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", kLabelWidth - 6,
+                       top + group_height / 2 + 4, escape(bars[b].label))
+        << '\n';
+    for (std::size_t v = 0; v < variants && v < bars[b].values.size(); ++v) {
+      const double value = bars[b].values[v];
+      if (value < 0.0) continue;
+      const int y = top + static_cast<int>(v) * kBarHeight;
+      const double width = std::max(1.0, kPlotWidth * value / largest);
+      out << fmt::format(R"(<rect x="{}" y="{}" width="{:.1f}" height="{}" fill="{}">)"
+                         R"(<title>{}: {:.4g} {}</title></rect>)"
+                         R"(<text x="{:.1f}" y="{}">{:.3g}</text>)",
+                         kLabelWidth, y, width, kBarHeight - 2, colour(v),
+                         escape(summary.variants[v].name), value, escape(unit),
+                         kLabelWidth + width + 4, y + kBarHeight - 3, value)
+          << '\n';
+    }
+  }
+  out << "</svg>\n";
+}
+
+std::vector<Bar> stage_bars(const CompareSummary& summary) {
+  std::vector<Bar> bars;
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    for (const auto& stage : summary.variants[v].stages) {
+      if (stage.role != NodeRole::process) continue;
+      auto it = std::find_if(bars.begin(), bars.end(),
+                             [&](const Bar& bar) { return bar.label == stage.node; });
+      if (it == bars.end()) {
+        bars.push_back({stage.node, std::vector<double>(summary.variants.size(), -1.0)});
+        it = bars.end() - 1;
+      }
+      it->values[v] = stage.median_ms;
+    }
+  }
+  bars.push_back({"frame (sum)", {}});
+  for (const auto& variant : summary.variants)
+    bars.back().values.push_back(variant.median_ms);
+  return bars;
+}
+
+// The eval scores, when some variant reports them: F, P, R and objects with F >= 0.75.
+std::vector<Bar> score_bars(const CompareSummary& summary) {
+  std::vector<Bar> bars;
+  for (const char* name : {"f", "precision", "recall", "objects_f75_ratio"}) {
+    Bar bar{name, {}};
+    bool any = false;
+    for (const auto& variant : summary.variants) {
+      const MetricSummary* metric = variant.find_metric(name);
+      bar.values.push_back(metric != nullptr ? metric->mean : -1.0);
+      any = any || metric != nullptr;
+    }
+    if (any) bars.push_back(std::move(bar));
+  }
+  return bars;
+}
+
+void write_summary_table(std::ostream& out, const CompareSummary& summary) {
+  const bool scored = !score_bars(summary).empty();
+  out << "<table id=\"summary\"><tr><th>variant</th><th>frame median ms</th><th>frame p95 "
+         "ms</th>";
+  if (scored) out << "<th>F</th><th>precision</th><th>recall</th><th>objects F&ge;0.75</th>";
+  out << "</tr>\n";
+  for (const auto& variant : summary.variants) {
+    out << fmt::format("<tr><td>{}</td><td>{:.2f}</td><td>{:.2f}</td>", escape(variant.name),
+                       variant.median_ms, variant.p95_ms);
+    if (scored) {
+      for (const char* name : {"f", "precision", "recall", "objects_f75_ratio"}) {
+        const MetricSummary* metric = variant.find_metric(name);
+        out << (metric != nullptr ? fmt::format("<td>{:.3f}</td>", metric->mean) : "<td>-</td>");
+      }
+    }
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+void write_variant_tables(std::ostream& out, const CompareSummary& summary) {
+  for (const auto& variant : summary.variants) {
+    out << "<h3>" << escape(variant.name) << "</h3>\n";
+    out << "<table class=\"stages\"><tr><th>node</th><th>stage</th><th>role</th><th>shared</th>"
+           "<th>calls</th><th>median ms</th><th>p95 ms</th></tr>\n";
+    for (const auto& stage : variant.stages) {
+      out << fmt::format(
+          "<tr><td{}>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td>"
+          "<td>{:.3f}</td></tr>\n",
+          stage.shared ? " class=\"shared\"" : "", escape(stage.merged_id), escape(stage.stage),
+          role_name(stage.role), stage.shared ? "yes" : "no", stage.calls, stage.median_ms,
+          stage.p95_ms);
+    }
+    out << "</table>\n";
+    if (variant.metrics.empty()) continue;
+    out << "<table class=\"metrics\"><tr><th>metric</th><th>frames</th><th>mean</th>"
+           "<th>median</th><th>min</th><th>max</th></tr>\n";
+    for (const auto& metric : variant.metrics) {
+      out << fmt::format(
+          "<tr><td>{}.{}</td><td>{}</td><td>{:.4g}</td><td>{:.4g}</td><td>{:.4g}</td>"
+          "<td>{:.4g}</td></tr>\n",
+          escape(metric.node), escape(metric.name), metric.count, metric.mean, metric.median,
+          metric.min, metric.max);
+    }
+    out << "</table>\n";
+  }
+}
+
+void write_images(std::ostream& out, const CompareSummary& summary,
+                  const std::vector<ImageRow>& images) {
+  if (images.empty()) return;
+  out << "<h2>Images</h2>\n";
+  std::string folder;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const ImageRow& row = images[i];
+    if (i == 0 || row.folder != folder) {
+      if (i > 0) out << "</table>\n";
+      folder = row.folder;
+      out << "<h3>" << escape(folder) << "</h3>\n<table class=\"images\"><tr><th>frame</th>";
+      for (const auto& variant : summary.variants)
+        out << "<th>" << escape(variant.name) << "</th>";
+      out << "</tr>\n";
+    }
+    out << "<tr><td>" << escape(row.stem) << "</td>";
+    for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+      const std::string& uri = v < row.data_uris.size() ? row.data_uris[v] : std::string();
+      if (uri.empty()) {
+        out << "<td>-</td>";
+      } else {
+        out << fmt::format(R"(<td><img src="{}" alt="{} {} {}"></td>)", uri,
+                           escape(summary.variants[v].name), escape(row.folder), escape(row.stem));
+      }
+    }
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+}  // namespace
+
+void write_compare_html(std::ostream& out, const CompareSummary& summary,
+                        const std::vector<ImageRow>& images) {
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>facet compare: "
+      << escape(summary.graph) << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";
+  out << "<h1>facet compare: " << escape(summary.graph) << "</h1>\n";
+  out << fmt::format(
+      "<p>{} variant(s) in one merged graph, {} frame(s); the first {} are warm-up and left out "
+      "of every time. A frame's time is the sum of the processing stages a variant runs, its own "
+      "and the shared ones (sources and sinks not counted); shared stages ran once per frame for "
+      "all variants.</p>\n",
+      summary.variants.size(), summary.frames, summary.warmup);
+  out << "<h2>Summary</h2>\n";
+  write_summary_table(out, summary);
+  out << "<h2>Plots</h2>\n";
+  write_bar_chart(out, "Stage median time per frame", "ms", stage_bars(summary), summary);
+  write_bar_chart(out, "Scores against ground truth (mean over frames)", "", score_bars(summary),
+                  summary);
+  out << "<h2>Per variant</h2>\n";
+  write_variant_tables(out, summary);
+  write_images(out, summary, images);
+  // Counts the images that decoded, for a check in a headless browser; the page needs no script.
+  out << "<script>window.addEventListener('load',function(){var n=0;"
+         "document.querySelectorAll('img').forEach(function(i){if(i.naturalWidth>0)n++;});"
+         "document.body.setAttribute('data-images-loaded',String(n));});</script>\n";
+  out << "</body></html>\n";
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,111 @@
+#include "facet/framework/compare_summary.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "facet/framework/statistics.hpp"
+
+namespace facet {
+namespace {
+
+NodeRole role_of(const ValidatedNode& node) {
+  if (node.stage == nullptr) return NodeRole::process;
+  if (node.stage->spec.inputs().empty()) return NodeRole::source;
+  if (node.stage->spec.outputs().empty()) return NodeRole::sink;
+  return NodeRole::process;
+}
+
+MetricSummary summarize_metric(const std::string& node, const std::string& name,
+                               const std::vector<double>& values) {
+  MetricSummary summary{node, name, values.size()};
+  if (values.empty()) return summary;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  summary.mean =
+      std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+  summary.median = median(values);
+  summary.min = *lo;
+  summary.max = *hi;
+  return summary;
+}
+
+}  // namespace
+
+const char* role_name(NodeRole role) {
+  switch (role) {
+    case NodeRole::source:
+      return "source";
+    case NodeRole::sink:
+      return "sink";
+    case NodeRole::process:
+      break;
+  }
+  return "process";
+}
+
+const MetricSummary* VariantSummary::find_metric(const std::string& metric_name) const {
+  const auto it = std::find_if(metrics.begin(), metrics.end(),
+                               [&](const MetricSummary& m) { return m.name == metric_name; });
+  return it == metrics.end() ? nullptr : &*it;
+}
+
+CompareSummary summarize_comparison(const MergedGraph& merged, const ValidatedGraph& graph,
+                                    const RunStats& stats, std::int64_t warmup) {
+  CompareSummary summary;
+  summary.graph = merged.spec.name;
+  summary.frames = stats.frames;
+  summary.warmup = std::min(warmup, stats.frames);
+
+  // Every timed call by node index (of stats.nodes) and frame.
+  std::map<std::string, std::size_t> stats_index;
+  for (std::size_t i = 0; i < stats.nodes.size(); ++i)
+    stats_index[stats.nodes[i].id] = i;
+  std::vector<std::map<std::int64_t, double>> call_ms(stats.nodes.size());
+  for (const auto& call : stats.calls) {
+    if (call.frame >= summary.warmup && call.node < call_ms.size()) {
+      call_ms[call.node][call.frame] += call.duration_ms;
+    }
+  }
+
+  for (const auto& variant : merged.variants) {
+    VariantSummary result;
+    result.name = variant.name;
+    std::map<std::int64_t, double> frame_ms;
+    for (std::int64_t frame = summary.warmup; frame < stats.frames; ++frame)
+      frame_ms[frame] = 0.0;
+    // In execution order, which is the graph's.
+    for (const auto& node : graph.nodes) {
+      const auto original = std::find_if(variant.node_ids.begin(), variant.node_ids.end(),
+                                         [&](const auto& ids) { return ids.second == node.id; });
+      if (original == variant.node_ids.end()) continue;
+      const auto index = stats_index.find(node.id);
+      if (index == stats_index.end()) continue;
+      StageTiming timing;
+      timing.node = original->first;
+      timing.merged_id = node.id;
+      timing.stage = node.stage != nullptr ? node.stage->spec.name() : "";
+      timing.role = role_of(node);
+      timing.shared = merged.is_shared(node.id);
+      std::vector<double> samples;
+      for (const auto& [frame, ms] : call_ms[index->second]) {
+        samples.push_back(ms);
+        if (timing.role == NodeRole::process) frame_ms[frame] += ms;
+      }
+      timing.calls = samples.size();
+      timing.median_ms = median(samples);
+      timing.p95_ms = percentile(samples, 95.0);
+      result.stages.push_back(timing);
+      for (const auto& [name, values] : stats.nodes[index->second].metrics) {
+        result.metrics.push_back(summarize_metric(original->first, name, values));
+      }
+    }
+    for (const auto& [frame, ms] : frame_ms)
+      result.frame_ms.push_back(ms);
+    result.median_ms = median(result.frame_ms);
+    result.p95_ms = percentile(result.frame_ms, 95.0);
+    summary.variants.push_back(std::move(result));
+  }
+  return summary;
+}
+
+}  // namespace facet

@@ -1,0 +1,195 @@
+// `facet compare` end to end on the bundled frames: the merged run, the four outputs, the
+// per-variant folders, and the report as a browser shows it.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <regex>
+
+#include "cli_runner.hpp"
+
+namespace facet::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kAbNormals = source_dir() / "graphs/ab_normals.yaml";
+const fs::path kCompareTabletop = source_dir() / "graphs/compare_tabletop.yaml";
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+  std::size_t count = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++count;
+  return count;
+}
+
+std::size_t png_files(const fs::path& dir) {
+  std::size_t count = 0;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(dir, error)) {
+    if (entry.path().extension() == ".png") ++count;
+  }
+  return count;
+}
+
+// The merged run of two normal estimators: shared stages once, the rest per variant.
+class CompareAbNormals : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir("facet-compare");
+    result_ = new CliResult(run_cli("compare " + shell_quote(kAbNormals.string()) +
+                                    " --variants cross_r2,pca5 --frames 3 --warmup 1 --images 2"
+                                    " --out " +
+                                    shell_quote(dir_->path().string())));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete dir_;
+  }
+  static TempDir* dir_;
+  static CliResult* result_;
+};
+TempDir* CompareAbNormals::dir_ = nullptr;
+CliResult* CompareAbNormals::result_ = nullptr;
+
+TEST_F(CompareAbNormals, RunsAndPrintsATable) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->out;
+  EXPECT_NE(result_->out.find("ab_normals: 2 variant(s), 3 frame(s), the first 1 left out"),
+            std::string::npos)
+      << result_->out;
+  EXPECT_NE(result_->out.find("frame median ms"), std::string::npos);
+  EXPECT_NE(result_->out.find("score.f"), std::string::npos) << result_->out;
+}
+
+TEST_F(CompareAbNormals, EachVariantWritesItsOwnFolder) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->out;
+  for (const char* variant : {"cross_r2", "pca5"}) {
+    EXPECT_EQ(png_files(dir_->path() / variant / "edges"), 3u) << variant;
+    EXPECT_EQ(png_files(dir_->path() / variant / "patches"), 3u) << variant;
+  }
+  EXPECT_FALSE(fs::exists(dir_->path() / "edges"));
+}
+
+TEST_F(CompareAbNormals, JsonTellsSharedFromPrivateStages) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->out;
+  const std::string json = read_file(dir_->path() / "compare.json");
+  EXPECT_NE(json.find("\"graph\": \"ab_normals\""), std::string::npos) << json.substr(0, 400);
+  EXPECT_NE(json.find("\"warmup\": 1"), std::string::npos);
+  // median is upstream of the difference: one node, shared; normals differ: one per variant.
+  const std::regex shared_median(
+      R"re("node": "median",\s*"merged_id": "median",\s*"stage": "filter.median",\s*"role": "process",\s*"shared": true)re");
+  EXPECT_TRUE(std::regex_search(json, shared_median));
+  const std::regex private_normals(
+      R"re("node": "normals",\s*"merged_id": "normals@pca5",\s*"stage": "normals.pca",\s*"role": "process",\s*"shared": false)re");
+  EXPECT_TRUE(std::regex_search(json, private_normals));
+  EXPECT_NE(json.find("\"merged_id\": \"patches@cross_r2\""), std::string::npos);
+  // Two timed frames per variant (3 run, 1 warm-up).
+  const std::regex frame_ms(R"re("frame_ms": \[\s*[0-9.e+-]+,\s*[0-9.e+-]+\s*\])re");
+  EXPECT_EQ(std::distance(std::sregex_iterator(json.begin(), json.end(), frame_ms),
+                          std::sregex_iterator()),
+            2);
+}
+
+TEST_F(CompareAbNormals, CsvHasRowsForBothVariants) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->out;
+  const std::string csv = read_file(dir_->path() / "compare.csv");
+  EXPECT_EQ(csv.rfind("variant,kind,node,stage,name,shared,count,median,p95,mean\n", 0), 0u);
+  EXPECT_NE(csv.find("cross_r2,total,,,frame_ms,,2,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("pca5,stage,normals,normals.pca,call_ms,no,2,"), std::string::npos);
+  EXPECT_NE(csv.find("pca5,stage,median,filter.median,call_ms,yes,2,"), std::string::npos);
+  EXPECT_NE(csv.find("pca5,metric,score,,f,,3,"), std::string::npos) << csv;
+}
+
+TEST_F(CompareAbNormals, ReportIsSelfContained) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->out;
+  const std::string html = read_file(dir_->path() / "report.html");
+  // Two folders (edges, patches) x two frames x two variants.
+  EXPECT_EQ(count_of(html, "<img src=\"data:image/png;base64,"), 8u);
+  EXPECT_EQ(count_of(html, "<img"), 8u);
+  EXPECT_EQ(count_of(html, "src=\"http"), 0u);
+  EXPECT_EQ(count_of(html, "href="), 0u);
+  EXPECT_EQ(count_of(html, "<link"), 0u);
+  EXPECT_NE(html.find("<table id=\"summary\">"), std::string::npos);
+  EXPECT_GE(count_of(html, "<svg class=\"chart\""), 2u);  // stage times and scores
+  EXPECT_LT(html.size(), 3u * 1024u * 1024u);
+}
+
+// A headless browser loads the page: every image decodes and the tables are there.
+TEST_F(CompareAbNormals, ReportLoadsInHeadlessChromium) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->out;
+  if (std::system("command -v chromium > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "chromium is not installed (Debian package 'chromium')";
+  }
+  TempDir profile("facet-chromium");
+  const fs::path dom_file = profile / "dom.html";
+  const std::string command =
+      "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" +
+      shell_quote((profile / "user").string()) + " --virtual-time-budget=5000 --dump-dom " +
+      shell_quote("file://" + (dir_->path() / "report.html").string()) + " > " +
+      shell_quote(dom_file.string()) + " 2> /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const std::string dom = read_file(dom_file);
+  EXPECT_NE(dom.find("data-images-loaded=\"8\""), std::string::npos) << dom.substr(0, 600);
+  EXPECT_NE(dom.find("<table id=\"summary\">"), std::string::npos);
+  EXPECT_GE(count_of(dom, "<table class=\"stages\">"), 2u);
+  EXPECT_NE(dom.find("normals@pca5"), std::string::npos);
+}
+
+TEST(Compare, ObjectPipelineScoresEveryVariant) {
+  TempDir dir("facet-compare");
+  const auto result = run_cli("compare " + shell_quote(kCompareTabletop.string()) +
+                              " --variants base,convex --frames 2 --warmup 0 --images 1 --out " +
+                              shell_quote(dir.path().string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const std::string json = read_file(dir / "compare.json");
+  // Every variant scored both frames, with an F in (0, 1].
+  const std::regex f_metric(
+      R"re("node": "score",\s*"name": "f",\s*"count": 2,\s*"mean": ([0-9.e+-]+))re");
+  std::size_t scored = 0;
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), f_metric);
+       it != std::sregex_iterator(); ++it) {
+    const double f = std::stod((*it)[1].str());
+    EXPECT_GT(f, 0.0);
+    EXPECT_LE(f, 1.0);
+    ++scored;
+  }
+  EXPECT_EQ(scored, 2u) << json;
+  EXPECT_EQ(png_files(dir / "base" / "overlay"), 2u);
+  EXPECT_EQ(png_files(dir / "convex" / "labels"), 2u);
+  EXPECT_NE(json.find("\"merged_id\": \"objects@convex\""), std::string::npos);
+  EXPECT_NE(json.find("\"merged_id\": \"blobs\""), std::string::npos);
+}
+
+TEST(Compare, UnknownVariantIsAGraphError) {
+  TempDir dir("facet-compare");
+  const auto result =
+      run_cli("compare " + shell_quote(kAbNormals.string()) +
+              " --variants cross_r2,nope --frames 1 --out " + shell_quote(dir.path().string()));
+  EXPECT_EQ(result.exit_code, 3) << result.out;
+  EXPECT_NE(result.out.find("unknown variant 'nope'"), std::string::npos) << result.out;
+}
+
+TEST(Compare, GraphWithoutVariantsNeedsVariantNames) {
+  TempDir dir("facet-compare");
+  const fs::path graph = dir / "plain.yaml";
+  std::ofstream(graph) << "facet: 1\nnodes:\n  source: {stage: io.frames, params: {path: "
+                       << shell_quote((source_dir() / "data/mosd").string()) << "}}\n";
+  const auto result = run_cli("compare " + shell_quote(graph.string()) + " --out " +
+                              shell_quote((dir / "out").string()));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("defines no variants"), std::string::npos) << result.out;
+}
+
+TEST(Compare, DuplicateVariantIsAUsageError) {
+  TempDir dir("facet-compare");
+  const auto result =
+      run_cli("compare " + shell_quote(kAbNormals.string()) +
+              " --variants pca5,pca5 --frames 1 --out " + shell_quote(dir.path().string()));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("given twice"), std::string::npos) << result.out;
+}
+
+}  // namespace
+}  // namespace facet::test
