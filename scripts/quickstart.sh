@@ -4,7 +4,6 @@
 #   scripts/quickstart.sh run    run the main job, graphs/tabletop.yaml, on the bundled frames
 #   scripts/quickstart.sh test   run the whole test suite (ctest over GoogleTest)
 #   scripts/quickstart.sh asan   build with AddressSanitizer + UBSan (preset `asan`) and run the suite
-#   scripts/quickstart.sh tsan   build with ThreadSanitizer (preset `tsan`) and run the suite
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -58,13 +57,8 @@ case "$mode" in
     build asan
     ctest --preset asan -j "$(nproc)"
     ;;
-  tsan)
-    install_packages
-    build tsan
-    ctest --preset tsan -j "$(nproc)"
-    ;;
   *)
-    echo "usage: scripts/quickstart.sh run|test|asan|tsan" >&2
+    echo "usage: scripts/quickstart.sh run|test|asan" >&2
     exit 2
     ;;
 esac
