@@ -182,6 +182,27 @@ TEST(Compare, GraphWithoutVariantsNeedsVariantNames) {
   EXPECT_NE(result.out.find("defines no variants"), std::string::npos) << result.out;
 }
 
+// A sink whose folder does not follow the graph's `output` writes below the variant's folder.
+TEST(Compare, SinksOutsideTheOutputParamWriteBelowTheVariantsFolder) {
+  TempDir dir("facet-compare");
+  const fs::path graph = dir / "fixed.yaml";
+  std::ofstream(graph) << "facet: 1\nnodes:\n"
+                       << "  source: {stage: io.frames, params: {path: "
+                       << shell_quote((source_dir() / "data/mosd").string()) << "}}\n"
+                       << "  median: {stage: filter.median, in: {depth: source.depth}}\n"
+                       << "  depth_out: {stage: io.depth, in: {depth: median.depth}, params: "
+                          "{dir: "
+                       << shell_quote((dir / "fixed").string()) << "}}\n"
+                       << "variants:\n  m5: {set: {median.size: 5}}\n";
+  const auto result =
+      run_cli("compare " + shell_quote(graph.string()) + " --variants base,m5 --frames 2 --out " +
+              shell_quote((dir / "out").string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(png_files(dir / "out" / "base" / "depth_out"), 2u);
+  EXPECT_EQ(png_files(dir / "out" / "m5" / "depth_out"), 2u);
+  EXPECT_FALSE(fs::exists(dir / "fixed"));
+}
+
 TEST(Compare, DuplicateVariantIsAUsageError) {
   TempDir dir("facet-compare");
   const auto result =
