@@ -168,3 +168,40 @@ TEST(SyntheticLayout, TouchingPairsTouch) {
 }
 
 }  // namespace
+
+namespace {
+
+// With a wall, every object stands in front of it, the table ends at it and the wall is
+// background.
+TEST(SyntheticLayout, ObjectsStandInFrontOfTheWall) {
+  facet::synthetic::RoomOptions room;
+  room.wall = true;
+  room.wall_distance_m = 0.35;
+  for (const std::string& preset : facet::synthetic::preset_names()) {
+    SCOPED_TRACE(preset);
+    facet::synthetic::RandomStream random(3);
+    const Scene scene = facet::synthetic::layout_scene(preset, room, random);
+    int walls = 0;
+    for (const auto& item : scene.solids) {
+      if (item.solid.shape == Shape::plane && std::abs(item.solid.rotation(1, 2)) > 0.5) {
+        ++walls;
+        EXPECT_EQ(item.label, 0);
+        EXPECT_DOUBLE_EQ(item.solid.centre[1], 0.35);
+      }
+      if (item.label == 0) continue;
+      // Sample the solid's bounding cube: no point of it beyond the wall.
+      const double reach = item.solid.bounding_radius();
+      for (int i = 0; i <= 10; ++i) {
+        for (int j = 0; j <= 10; ++j) {
+          for (int k = 0; k <= 10; ++k) {
+            const Vec3 p = item.solid.centre + reach * Vec3(0.2 * i - 1, 0.2 * j - 1, 0.2 * k - 1);
+            if (inside(item.solid, p, 0.0)) EXPECT_LT(p[1], 0.35) << "object " << item.label;
+          }
+        }
+      }
+    }
+    EXPECT_EQ(walls, 1);
+  }
+}
+
+}  // namespace
