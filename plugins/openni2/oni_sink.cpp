@@ -24,14 +24,15 @@ StageSpec OniSink::spec() {
   return StageSpec("io.oni",
                    "Writes the depth stream as one .oni recording (see docs/cameras.md).\n"
                    "OpenNI2's file format with one uncompressed depth stream in 1 mm: io.openni2 "
-                   "(uri: the file), NiViewer and other OpenNI2 programs play it. The first frame "
+                   "(uri: the file) and other programs that use OpenNI2's file driver play it. The "
+                   "first frame "
                    "fixes the image size and the field of view the file reports (from its "
                    "intrinsics: 2 atan(width / 2 fx) across); every later frame must have that "
                    "size. Each frame keeps its own timestamp (microseconds); one that does not "
                    "grow (a looping source) is replaced by the previous one plus a period of "
                    "'fps'. The file is complete when the stream ends.")
       .input<DepthImage>("depth", "Depth, CV_16UC1 in mm, at most 1600x1200 pixels.")
-      .param("path", "", "The .oni file to write (its folder must exist).", {.required = true})
+      .param("path", "", "The .oni file to write (its folder is created).", {.required = true})
       .param("fps", 30,
              "Frame rate the recording declares; also the period for timestamps "
              "that do not grow.",
@@ -52,10 +53,10 @@ void OniSink::process(ProcessContext& ctx) {
   }
   if (!writer_) {
     std::error_code error;
-    const fs::path folder = file_.has_parent_path() ? file_.parent_path() : fs::path(".");
-    if (!fs::is_directory(folder, error)) {
-      throw StageError("cannot record '" + file_.string() + "': folder '" + folder.string() +
-                       "' does not exist");
+    if (file_.has_parent_path()) fs::create_directories(file_.parent_path(), error);
+    if (error) {
+      throw StageError("cannot record '" + file_.string() + "': cannot create folder '" +
+                       file_.parent_path().string() + "': " + error.message());
     }
     OniStreamInfo info;
     info.width_px = depth.depth.cols;

@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <opencv2/core.hpp>
 #include <string>
@@ -171,15 +173,26 @@ TEST(OniPlayback, IoOniRefusesAFrameOfAnotherSizeNamingTheFile) {
   }
 }
 
-TEST(OniPlayback, IoOniNamesAMissingFolder) {
-  facet::testing::StageRunner<OniSink> sink({{"path", std::string("/no/such/dir/a.oni")}});
+TEST(OniPlayback, IoOniCreatesItsFolderOrNamesWhyItCannot) {
+  test::TempDir dir("facet-oni");
+  const auto nested = dir / "takes" / "today" / "a.oni";
+  {
+    facet::testing::StageRunner<OniSink> sink({{"path", nested.string()}});
+    sink.set_input("depth", Packet::make(stream_frame(0)));
+    sink.run();
+  }
+  EXPECT_TRUE(std::filesystem::is_regular_file(nested));
+
+  std::ofstream(dir / "plain") << "a file, not a folder";
+  const std::string blocked = (dir / "plain" / "a.oni").string();
+  facet::testing::StageRunner<OniSink> sink({{"path", blocked}});
   sink.set_input("depth", Packet::make(stream_frame(0)));
   try {
     sink.run();
-    ADD_FAILURE() << "wrote into a missing folder";
+    ADD_FAILURE() << "wrote below a plain file";
   } catch (const StageError& error) {
-    EXPECT_THAT(error.what(), HasSubstr("'/no/such/dir/a.oni'"));
-    EXPECT_THAT(error.what(), HasSubstr("does not exist"));
+    EXPECT_THAT(error.what(), HasSubstr("'" + blocked + "'"));
+    EXPECT_THAT(error.what(), HasSubstr("cannot create folder"));
   }
 }
 
