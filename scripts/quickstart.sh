@@ -16,6 +16,7 @@ packages=(
   libboost-dev libboost-filesystem-dev libyaml-cpp-dev libopencv-dev
   libeigen3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libpcl-dev
   libdeflate-dev
+  libopenni2-dev libopencv-highgui-dev libxcb1-dev xvfb
   chromium
 )
 
