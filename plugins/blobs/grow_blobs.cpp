@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "blobs/blob_support.hpp"
+#include "blobs/edge_attachment.hpp"
 #include "blobs/euclidean_regions.hpp"
 #include "blobs/workspace_box.hpp"
 #include "facet/image_checks.hpp"
@@ -32,6 +33,10 @@ StageSpec GrowBlobs::spec() {
       .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
       .optional_input<SupportPlanes>("planes",
                                      "Support planes, for front_only and max_on_plane_fraction.")
+      .optional_input<LabelImage>(
+          "plane_labels",
+          "Which pixels are plane points (planes.support `plane_labels`, 0 = none); with "
+          "edge_pixels, the valid pixels of no patch and no plane take part too.")
       .output<LabelImage>("blobs", "CV_32SC1 blob ids 1..count, 0 = no blob.")
       .param("max_distance_m", 0.01,
              "Delta_blob: neighbouring pixels join one blob when their points are closer.",
@@ -68,6 +73,16 @@ StageSpec GrowBlobs::spec() {
       .param("on_plane_distance_m", 0.012,
              "max_on_plane_fraction: how close to a plane a point counts as on it.",
              {.unit = "m", .min = 0.0, .max = 1.0, .origin = "planes.support distance_m (delta)"})
+      .param("edge_pixels", true,
+             "With the plane_labels input: valid pixels that are in no patch and on no plane "
+             "(normal-edge pixels the patches did not absorb: silhouettes, creases, small "
+             "curved objects whose every pixel is an edge) take part in the blobs too, as the "
+             "paper's blobs hold edge pixels (k_fe counts them). Without it a small ball or "
+             "cup rim that grew no patch is lost. They join the blob they connect to through "
+             "other edge pixels (closer than max_distance_m, breadth first), never joining two "
+             "blobs; those no blob reaches form blobs of their own (at least min_size_px) when a "
+             "support plane was found.",
+             {.origin = "paper sec. II-B e, f; measured in docs/evaluation.md"})
       .param("workspace", "",
              "Task space: blobs whose centroid lies outside this axis-aligned box are removed. "
              "'xmin,xmax,ymin,ymax,zmin,zmax' in metres in the camera frame (x right, y down, "
@@ -80,7 +95,8 @@ StageSpec GrowBlobs::spec() {
 
 GrowBlobs::GrowBlobs(const Params& params)
     : max_distance_m_(static_cast<float>(params.get_double("max_distance_m"))),
-      min_size_px_(params.get_int("min_size_px")) {
+      min_size_px_(params.get_int("min_size_px")),
+      edge_pixels_(params.get_bool("edge_pixels")) {
   rule_.drop_behind = params.get_bool("front_only");
   rule_.max_behind_fraction = params.get_double("max_behind_fraction");
   rule_.behind_margin_m = static_cast<float>(params.get_double("behind_margin_m"));
@@ -101,20 +117,43 @@ void GrowBlobs::process(ProcessContext& ctx) {
   require_same_size(patches.labels, "patches", points.points, "points");
   const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
 
-  // Taking part: a patch pixel with a finite point.
+  // Taking part: a patch pixel with a finite point; with edge_pixels, afterwards, the pixels of
+  // no patch and no plane (edge_attachment.hpp says why not at once).
+  const LabelImage* plane_labels = edge_pixels_ && ctx.has_input("plane_labels")
+                                       ? &ctx.input<LabelImage>("plane_labels")
+                                       : nullptr;
+  if (plane_labels != nullptr) {
+    require_type(plane_labels->labels, CV_32SC1, "plane_labels");
+    require_same_size(plane_labels->labels, "plane_labels", points.points, "points");
+  }
   cv::Mat mask(patches.labels.size(), CV_8UC1);
+  cv::Mat edges;
+  if (plane_labels != nullptr) edges.create(patches.labels.size(), CV_8UC1);
   for (int row = 0; row < mask.rows; ++row) {
     const auto* label = patches.labels.ptr<std::int32_t>(row);
     const auto* p = xyz.ptr<float>(row);
     auto* out = mask.ptr<unsigned char>(row);
+    const auto* plane =
+        plane_labels != nullptr ? plane_labels->labels.ptr<std::int32_t>(row) : nullptr;
+    auto* edge = plane_labels != nullptr ? edges.ptr<unsigned char>(row) : nullptr;
     for (int col = 0; col < mask.cols; ++col) {
-      out[col] = label[col] > 0 && std::isfinite(p[3 * col]) && std::isfinite(p[3 * col + 1]) &&
-                         std::isfinite(p[3 * col + 2])
-                     ? 1
-                     : 0;
+      const bool valid = std::isfinite(p[3 * col]) && std::isfinite(p[3 * col + 1]) &&
+                         std::isfinite(p[3 * col + 2]);
+      out[col] = valid && label[col] > 0 ? 1 : 0;
+      if (edge != nullptr) edge[col] = valid && label[col] <= 0 && plane[col] == 0 ? 1 : 0;
     }
   }
   EuclideanRegions regions = grow_euclidean_regions(mask, xyz, max_distance_m_, min_size_px_);
+  EdgeAttachment attachment;
+  if (plane_labels != nullptr) {
+    // Blobs of edge pixels alone only where a support plane was found: without one, the edge
+    // pixels are as likely the shreds of a surface seen edge-on that no patch could grow on
+    // (a table seen from its own height) as objects.
+    const bool have_plane =
+        ctx.has_input("planes") && !ctx.input<SupportPlanes>("planes").planes.empty();
+    attachment = attach_edge_pixels(regions, edges, xyz, max_distance_m_,
+                                    have_plane ? min_size_px_ : std::int64_t{-1});
+  }
   DroppedBlobs dropped;
   if (ctx.has_input("planes")) {
     dropped = drop_background_blobs(regions, xyz, ctx.input<SupportPlanes>("planes"), rule_);
@@ -129,6 +168,10 @@ void GrowBlobs::process(ProcessContext& ctx) {
   ctx.metric("blobs_behind_planes", dropped.behind);
   ctx.metric("blobs_on_planes", dropped.on_plane);
   ctx.metric("blobs_outside_workspace", outside);
+  if (plane_labels != nullptr) {
+    ctx.metric("edge_px_attached", static_cast<double>(attachment.attached_px));
+    ctx.metric("edge_only_blobs", attachment.edge_only_blobs);
+  }
   ctx.output("blobs", std::move(blobs));
 }
 

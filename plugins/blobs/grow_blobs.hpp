@@ -20,6 +20,7 @@ class GrowBlobs final : public Stage {
  private:
   float max_distance_m_;
   std::int64_t min_size_px_;
+  bool edge_pixels_;
   BackgroundBlobRule rule_;
   std::optional<Eigen::AlignedBox3f> workspace_;
 };
