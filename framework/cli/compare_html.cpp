@@ -103,6 +103,55 @@ void write_bar_chart(std::ostream& out, const std::string& title, const std::str
   out << "</svg>\n";
 }
 
+// Every timed frame's time, one line per variant: shows drift, outliers and a warm-up too short.
+void write_frame_chart(std::ostream& out, const CompareSummary& summary) {
+  std::size_t frames = 0;
+  double largest = 0.0;
+  for (const auto& variant : summary.variants) {
+    frames = std::max(frames, variant.frame_ms.size());
+    for (const double ms : variant.frame_ms)
+      largest = std::max(largest, ms);
+  }
+  if (frames < 2 || largest <= 0.0) return;
+  constexpr int kLeft = 76;
+  constexpr int kWidth = 560;
+  constexpr int kHeight = 180;
+  constexpr int kTop = 24;
+  const auto x_of = [&](std::size_t i) {
+    return kLeft + kWidth * static_cast<double>(i) / static_cast<double>(frames - 1);
+  };
+  const auto y_of = [&](double ms) { return kTop + kHeight * (1.0 - ms / largest); };
+  out << "<h3>Time of every timed frame</h3>\n";
+  out << fmt::format(R"(<svg class="chart" xmlns="http://www.w3.org/2000/svg" width="{}" )"
+                     R"(height="{}" role="img" aria-label="frame times">)",
+                     kLeft + kWidth + 20, kTop + kHeight + 30)
+      << '\n';
+  out << fmt::format(R"(<line x1="{0}" y1="{1}" x2="{0}" y2="{2}" stroke="#999"/>)"
+                     R"(<line x1="{0}" y1="{2}" x2="{3}" y2="{2}" stroke="#999"/>)"
+                     R"(<text x="{4}" y="{5}" text-anchor="end">{6:.3g} ms</text>)"
+                     R"(<text x="{4}" y="{2}" text-anchor="end">0</text>)"
+                     R"(<text x="{3}" y="{7}" text-anchor="end">frame {8}</text>)",
+                     kLeft, kTop, kTop + kHeight, kLeft + kWidth, kLeft - 4, kTop + 4, largest,
+                     kTop + kHeight + 16, summary.warmup + static_cast<std::int64_t>(frames) - 1)
+      << '\n';
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    const auto& variant = summary.variants[v];
+    std::string points;
+    for (std::size_t i = 0; i < variant.frame_ms.size(); ++i)
+      points += fmt::format("{:.1f},{:.1f} ", x_of(i), y_of(variant.frame_ms[i]));
+    out << fmt::format(R"(<polyline fill="none" stroke="{}" stroke-width="1.5" points="{}">)"
+                       R"(<title>{}</title></polyline>)",
+                       colour(v), points, escape(variant.name))
+        << '\n';
+    out << fmt::format(R"(<rect x="{}" y="4" width="10" height="10" fill="{}"/>)"
+                       R"(<text x="{}" y="13">{}</text>)",
+                       kLeft + static_cast<int>(v) * 90, colour(v),
+                       kLeft + static_cast<int>(v) * 90 + 14, escape(variant.name))
+        << '\n';
+  }
+  out << "</svg>\n";
+}
+
 std::vector<Bar> stage_bars(const CompareSummary& summary) {
   std::vector<Bar> bars;
   for (std::size_t v = 0; v < summary.variants.size(); ++v) {
@@ -234,6 +283,7 @@ void write_compare_html(std::ostream& out, const CompareSummary& summary,
   write_summary_table(out, summary);
   out << "<h2>Plots</h2>\n";
   write_bar_chart(out, "Stage median time per frame", "ms", stage_bars(summary), summary);
+  write_frame_chart(out, summary);
   write_bar_chart(out, "Scores against ground truth (mean over frames)", "", score_bars(summary),
                   summary);
   out << "<h2>Per variant</h2>\n";
