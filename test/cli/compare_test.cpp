@@ -123,7 +123,7 @@ TEST_F(CompareAbNormals, ReportLoadsInHeadlessChromium) {
   TempDir profile("facet-chromium");
   const fs::path dom_file = profile / "dom.html";
   const std::string command =
-      "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
       "--user-data-dir=" +
       shell_quote((profile / "user").string()) + " --virtual-time-budget=5000 --dump-dom " +
