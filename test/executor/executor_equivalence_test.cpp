@@ -9,11 +9,11 @@
 #include <map>
 #include <string>
 
+#include "bundled_plugins.hpp"
 #include "facet/framework/diagnostics.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_spec.hpp"
 #include "facet/framework/pipelined_executor.hpp"
-#include "facet/framework/plugin_loader.hpp"
 #include "facet/framework/registry.hpp"
 #include "facet/framework/validated_graph.hpp"
 #include "temp_dir.hpp"
@@ -22,14 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const facet::Registry& bundled_plugins() {
-  static const facet::Registry registry = [] {
-    facet::Registry loaded;
-    facet::load_plugins({{FACET_PLUGIN_DIR, "build"}}, loaded);
-    return loaded;
-  }();
-  return registry;
-}
+using facet::test::bundled_plugins;
 
 // Every file under `dir`, by path relative to it, with its bytes.
 std::map<std::string, std::string> files_under(const fs::path& dir) {

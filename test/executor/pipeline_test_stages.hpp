@@ -16,6 +16,7 @@
 #include "facet/framework/registry.hpp"
 #include "facet/stage.hpp"
 #include "facet/types/images.hpp"
+#include "test_graph.hpp"
 
 namespace facet::test {
 
@@ -107,12 +108,7 @@ class CountingSource final : public Stage {
       return;
     }
     record_frame(ctx);
-    if (gap_every_ > 0 && (ctx.frame_index() + 1) % gap_every_ == 0) return;
-    DepthImage image;
-    image.frame.index = ctx.frame_index();
-    image.frame.stem = "f" + std::to_string(ctx.frame_index());
-    image.depth = cv::Mat(4, 4, CV_16UC1, cv::Scalar(static_cast<double>(ctx.frame_index() + 1)));
-    ctx.output("depth", std::move(image));
+    emit_counting_frame(ctx, gap_every_);
   }
 
  private:

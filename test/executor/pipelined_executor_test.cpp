@@ -8,17 +8,13 @@
 #include "facet/framework/executor.hpp"
 #include "facet/framework/registry.hpp"
 #include "pipeline_test_stages.hpp"
+#include "test_graph.hpp"
 
 namespace {
 
 using facet::test::pipeline_probe;
 
-struct NodeDesc {
-  std::string id;
-  std::string stage;
-  std::map<std::string, facet::ParamValue> params;
-  std::vector<std::string> inputs;  // nodes feeding the input ports, in port order
-};
+using facet::test::NodeDesc;
 
 class PipelinedExecutorTest : public ::testing::Test {
  protected:
@@ -27,26 +23,8 @@ class PipelinedExecutorTest : public ::testing::Test {
     facet::test::add_pipeline_test_stages(registry_);
   }
 
-  // Nodes must be listed producers first (the executor takes the graph's order as given).
   facet::ValidatedGraph graph(const std::vector<NodeDesc>& nodes) {
-    facet::ValidatedGraph g;
-    g.name = "test";
-    std::map<std::string, std::size_t> index;
-    for (const auto& desc : nodes) {
-      facet::ValidatedNode node;
-      node.id = desc.id;
-      node.stage = registry_.find(desc.stage);
-      EXPECT_NE(node.stage, nullptr) << desc.stage;
-      node.params = node.stage->spec.default_params();
-      for (const auto& [name, value] : desc.params)
-        node.params.set(name, value);
-      for (const auto& from : desc.inputs)
-        node.inputs.push_back(facet::Connection{index.at(from), 0});
-      node.inputs.resize(node.stage->spec.inputs().size());
-      index[desc.id] = g.nodes.size();
-      g.nodes.push_back(std::move(node));
-    }
-    return g;
+    return facet::test::make_graph(registry_, nodes);
   }
 
   // source → serial → clonable → reentrant → sink, with `frames` frames.

@@ -5,6 +5,7 @@
 #include "facet/framework/executor.hpp"
 #include "facet/framework/registry.hpp"
 #include "facet/types/images.hpp"
+#include "test_graph.hpp"
 
 namespace {
 
@@ -39,12 +40,7 @@ class Counter final : public facet::Stage {
       return;
     }
     ctx.metric("index", static_cast<double>(ctx.frame_index()));
-    if (gap_every_ > 0 && (ctx.frame_index() + 1) % gap_every_ == 0) return;  // empty output
-    facet::DepthImage image;
-    image.frame.index = ctx.frame_index();
-    image.frame.stem = "f" + std::to_string(ctx.frame_index());
-    image.depth = cv::Mat(4, 4, CV_16UC1, cv::Scalar(static_cast<double>(ctx.frame_index() + 1)));
-    ctx.output("depth", std::move(image));
+    facet::test::emit_counting_frame(ctx, gap_every_);
   }
 
  private:
@@ -85,12 +81,7 @@ class Unbuildable final : public facet::Stage {
   void process(facet::ProcessContext&) override {}
 };
 
-struct NodeDesc {
-  std::string id;
-  std::string stage;
-  std::map<std::string, facet::ParamValue> params;
-  std::vector<std::string> inputs;  // "node" feeding the single input port, or empty
-};
+using facet::test::NodeDesc;
 
 class SequentialExecutorTest : public ::testing::Test {
  protected:
@@ -101,27 +92,8 @@ class SequentialExecutorTest : public ::testing::Test {
     registry_.add<Unbuildable>();
   }
 
-  // Nodes must be listed producers first (the executor takes the graph's order as given).
   facet::ValidatedGraph graph(const std::vector<NodeDesc>& nodes) {
-    facet::ValidatedGraph g;
-    g.name = "test";
-    std::map<std::string, std::size_t> index;
-    for (const auto& desc : nodes) {
-      facet::ValidatedNode node;
-      node.id = desc.id;
-      node.stage = registry_.find(desc.stage);
-      EXPECT_NE(node.stage, nullptr) << desc.stage;
-      node.params = node.stage->spec.default_params();
-      for (const auto& [name, value] : desc.params)
-        node.params.set(name, value);
-      for (const auto& from : desc.inputs) {
-        node.inputs.push_back(facet::Connection{index.at(from), 0});
-      }
-      node.inputs.resize(node.stage->spec.inputs().size());
-      index[desc.id] = g.nodes.size();
-      g.nodes.push_back(std::move(node));
-    }
-    return g;
+    return facet::test::make_graph(registry_, nodes);
   }
 
   facet::Registry registry_;

@@ -4,31 +4,21 @@
 #include <yaml-cpp/yaml.h>  // JSON is YAML: the trace is read back by a parser, not by searching
 
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "facet/framework/executor.hpp"
 #include "facet/framework/pipelined_executor.hpp"
 #include "pipeline_test_stages.hpp"
+#include "test_graph.hpp"
 
 namespace {
 
 facet::ValidatedGraph chain(const facet::Registry& registry, std::int64_t frames) {
-  facet::ValidatedGraph g;
-  g.name = "chain";
-  const std::vector<std::pair<std::string, std::string>> nodes{{"source", "ptest.source"},
-                                                               {"serial", "ptest.serial"},
-                                                               {"clone", "ptest.clonable"},
-                                                               {"sink", "ptest.sink"}};
-  for (const auto& [id, stage] : nodes) {
-    facet::ValidatedNode node;
-    node.id = id;
-    node.stage = registry.find(stage);
-    node.params = node.stage->spec.default_params();
-    if (id == "source") node.params.set("frames", frames);
-    if (!g.nodes.empty()) node.inputs.push_back(facet::Connection{g.nodes.size() - 1, 0});
-    g.nodes.push_back(std::move(node));
-  }
-  return g;
+  return facet::test::make_graph(registry, {{"source", "ptest.source", {{"frames", frames}}, {}},
+                                            {"serial", "ptest.serial", {}, {"source"}},
+                                            {"clone", "ptest.clonable", {}, {"serial"}},
+                                            {"sink", "ptest.sink", {}, {"clone"}}});
 }
 
 // The trace of a run: per (node, frame), how many slices, and the threads seen.

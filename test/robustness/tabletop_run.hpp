@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "bundled_plugins.hpp"
 #include "facet/framework/diagnostics.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_spec.hpp"
@@ -31,16 +32,6 @@
 #include "temp_dir.hpp"
 
 namespace facet::test {
-
-// The bundled plugins of this build, loaded once per test program.
-inline const Registry& bundled_plugins() {
-  static const Registry registry = [] {
-    Registry loaded;
-    load_plugins({{FACET_PLUGIN_DIR, "build"}}, loaded);
-    return loaded;
-  }();
-  return registry;
-}
 
 // A dataset folder (docs/data-formats.md): intrinsics.yaml and depth/<stem>.png, plus the folder
 // the run writes its results to.
