@@ -42,8 +42,10 @@ EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
   const auto* point = xyz.ptr<float>();
   EdgeAttachment result;
 
-  // Breadth first from every blob pixel next to an edge pixel, in raster order: an edge pixel
-  // goes to the blob that reaches it in the fewest steps (the first in raster order on a tie).
+  // Breadth first from the blobs: an edge pixel goes to the blob that reaches it in the fewest
+  // steps. The first step is taken from the edge pixels' side, which are few, rather than from
+  // every blob pixel: an edge pixel next to a blob joins its first neighbour in raster order
+  // that is a blob pixel close enough; the steps after it spread from those pixels in turn.
   std::vector<std::int32_t> queue;
   const auto free_edge = [&](int y, int x) {
     const std::size_t i =
@@ -52,16 +54,26 @@ EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
   };
   for (int y = 0; y < rows; ++y) {
     for (int x = 0; x < cols; ++x) {
-      if (label[y * cols + x] == 0) continue;
-      bool next_to_edge = false;
-      for (int dy = -1; dy <= 1 && !next_to_edge; ++dy) {
-        for (int dx = -1; dx <= 1 && !next_to_edge; ++dx) {
+      const int i = y * cols + x;
+      if (edge[i] == 0 || label[i] != 0) continue;
+      std::int32_t owner = 0;
+      for (int dy = -1; dy <= 1 && owner == 0; ++dy) {
+        for (int dx = -1; dx <= 1 && owner == 0; ++dx) {
           const int ny = y + dy;
           const int nx = x + dx;
-          next_to_edge = ny >= 0 && ny < rows && nx >= 0 && nx < cols && free_edge(ny, nx);
+          if (ny < 0 || ny >= rows || nx < 0 || nx >= cols) continue;
+          const int n = ny * cols + nx;
+          // Only blob pixels that were blobs before this pass (not edge pixels claimed in it).
+          if (label[n] == 0 || edge[n] != 0) continue;
+          if (close(point + 3 * static_cast<std::ptrdiff_t>(i),
+                    point + 3 * static_cast<std::ptrdiff_t>(n), max_squared))
+            owner = label[n];
         }
       }
-      if (next_to_edge) queue.push_back(y * cols + x);
+      if (owner == 0) continue;
+      label[i] = owner;
+      ++result.attached_px;
+      queue.push_back(i);
     }
   }
   for (std::size_t head = 0; head < queue.size(); ++head) {
