@@ -45,42 +45,37 @@ void set_label(benchmark::State& state) {
   state.SetLabel(names[state.range(0)]);
 }
 
-void BM_EncodeFacet(benchmark::State& state) {
+// Encodes the input of the benchmark's argument with `encode` in a loop; reports the file size.
+template <class Encode>
+void encode_loop(benchmark::State& state, Encode encode) {
   const cv::Mat image = input(static_cast<int>(state.range(0)));
   std::size_t bytes = 0;
   for (auto _ : state) {
-    std::vector<std::uint8_t> file = png::encode(image);
+    std::vector<std::uint8_t> file = encode(image);
     bytes = file.size();
     benchmark::DoNotOptimize(file.data());
   }
   state.counters["file_kB"] = static_cast<double>(bytes) / 1000.0;
   set_label(state);
+}
+
+void BM_EncodeFacet(benchmark::State& state) {
+  encode_loop(state, [](const cv::Mat& image) { return png::encode(image); });
 }
 
 // The run coder, meant for label images.
 void BM_EncodeFacetRuns(benchmark::State& state) {
-  const cv::Mat image = input(static_cast<int>(state.range(0)));
-  std::size_t bytes = 0;
-  for (auto _ : state) {
-    std::vector<std::uint8_t> file = png::encode(image, {.deflate = png::Deflate::runs});
-    bytes = file.size();
-    benchmark::DoNotOptimize(file.data());
-  }
-  state.counters["file_kB"] = static_cast<double>(bytes) / 1000.0;
-  set_label(state);
+  encode_loop(state, [](const cv::Mat& image) {
+    return png::encode(image, {.deflate = png::Deflate::runs});
+  });
 }
 
 void BM_EncodeOpenCV(benchmark::State& state) {
-  const cv::Mat image = input(static_cast<int>(state.range(0)));
-  std::size_t bytes = 0;
-  for (auto _ : state) {
+  encode_loop(state, [](const cv::Mat& image) {
     std::vector<std::uint8_t> file;
     cv::imencode(".png", image, file);
-    bytes = file.size();
-    benchmark::DoNotOptimize(file.data());
-  }
-  state.counters["file_kB"] = static_cast<double>(bytes) / 1000.0;
-  set_label(state);
+    return file;
+  });
 }
 
 // Decoding is measured on files libpng wrote (through OpenCV: a filter chosen per row), as the
