@@ -28,9 +28,10 @@ for program in facet facet_pcl_baselines; do
 done
 mkdir -p "$out"
 
-# facet first: its per-stage medians (processing stages without file I/O) and whole-frame time.
+# facet first: its per-stage medians (processing stages without file I/O) and whole-frame time,
+# on one thread (--threads 1: the sequential executor) as the PCL pipelines run.
 for run in 1 2 3; do
-  "$bin/facet" run "$here/graphs/tabletop.yaml" -q --param input="$dataset" \
+  "$bin/facet" run "$here/graphs/tabletop.yaml" -q --threads 1 --param input="$dataset" \
     --param output="$out/facet" --json "$out/facet$run.json"
 done
 # One thread: none of these pipelines is parallel, but keep OpenMP out of the timing for sure.
