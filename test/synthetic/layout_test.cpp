@@ -195,7 +195,9 @@ TEST(SyntheticLayout, ObjectsStandInFrontOfTheWall) {
         for (int j = 0; j <= 10; ++j) {
           for (int k = 0; k <= 10; ++k) {
             const Vec3 p = item.solid.centre + reach * Vec3(0.2 * i - 1, 0.2 * j - 1, 0.2 * k - 1);
-            if (inside(item.solid, p, 0.0)) EXPECT_LT(p[1], 0.35) << "object " << item.label;
+            if (inside(item.solid, p, 0.0)) {
+              EXPECT_LT(p[1], 0.35) << "object " << item.label;
+            }
           }
         }
       }
