@@ -1,0 +1,83 @@
+#include "track/track_labels.hpp"
+
+#include <stdexcept>
+
+#include "facet/image_checks.hpp"
+#include "facet/types/images.hpp"
+
+namespace facet::track {
+namespace {
+
+TrackOptions options_from(const Params& params) {
+  TrackOptions options;
+  options.measure = eval::parse_overlap_measure(params.get_string("measure"), "measure");
+  options.min_overlap = params.get_double("min_overlap");
+  options.memory_frames = params.get_int("memory_frames");
+  return options;
+}
+
+}  // namespace
+
+StageSpec TrackLabels::spec() {
+  return StageSpec("track.labels",
+                   "Keeps segment ids stable from frame to frame, so the objects of a video keep "
+                   "their numbers. Each frame's segments are paired one to one with the tracks of "
+                   "earlier frames by pixel overlap (Hungarian method, largest total overlap); a "
+                   "segment paired with overlap above min_overlap takes the track's id, any other "
+                   "starts a new track with an id never used before (ids only grow). A track that "
+                   "finds no segment keeps the pixels it last had for memory_frames frames and can "
+                   "be continued within them. Deterministic. Reports tracks (segments this frame), "
+                   "new_tracks and remembered (tracks kept, seen or lost).")
+      .input<LabelImage>("labels", "Segment ids of the frame (0 = none), CV_32SC1.")
+      .output<LabelImage>("labels",
+                          "The same segments with their track ids (0 = none); count = the "
+                          "largest id given so far.")
+      .param("measure", "mean_ratio",
+             "Overlap of a segment i and a track j: mean_ratio = (|i&j|/|i| + |i&j|/|j|) / 2, "
+             "iou = |i&j| / |i|j|.",
+             {.choices = {std::string("mean_ratio"), std::string("iou")},
+              .origin = "mean_ratio: the authors' later code"})
+      .param("min_overlap", 0.3, "A segment continues a track when their overlap is above this.",
+             {.min = 0.0, .max = 1.0})
+      .param("memory_frames", 10,
+             "Frames a lost track is remembered and can still be continued; 0 = forgotten the "
+             "first frame it is not seen.",
+             {.unit = "frames", .min = 0})
+      .concurrency(Concurrency::serial);
+}
+
+TrackLabels::TrackLabels(const Params& params) : tracker_(options_from(params)) {}
+
+void TrackLabels::process(ProcessContext& ctx) {
+  const LabelImage& input = ctx.input<LabelImage>("labels");
+  require_type(input.labels, CV_32SC1, "labels");
+  const std::int32_t largest_before = tracker_.largest_id();
+  LabelImage tracked;
+  static_cast<FrameHeader&>(tracked) = input;
+  try {
+    tracked.labels =
+        tracker_.update(input.labels.isContinuous() ? input.labels : input.labels.clone());
+  } catch (const std::invalid_argument& error) {
+    throw StageError(std::string("input 'labels': ") + error.what());
+  }
+  tracked.count = tracker_.largest_id();
+  double segments = 0.0;
+  {
+    std::vector<bool> seen(static_cast<std::size_t>(tracked.count) + 1, false);
+    for (int y = 0; y < tracked.labels.rows; ++y) {
+      const auto* row = tracked.labels.ptr<std::int32_t>(y);
+      for (int x = 0; x < tracked.labels.cols; ++x) {
+        if (row[x] != 0 && !seen[static_cast<std::size_t>(row[x])]) {
+          seen[static_cast<std::size_t>(row[x])] = true;
+          segments += 1.0;
+        }
+      }
+    }
+  }
+  ctx.metric("tracks", segments);
+  ctx.metric("new_tracks", static_cast<double>(tracker_.largest_id() - largest_before));
+  ctx.metric("remembered", static_cast<double>(tracker_.remembered_tracks()));
+  ctx.output("labels", std::move(tracked));
+}
+
+}  // namespace facet::track
