@@ -56,7 +56,10 @@ void expect_variants_valid(const std::string& name, const std::vector<std::strin
 }
 
 TEST(PaperGraphs, Table1ReportsTheNormalDeviationOfEveryMethod) {
-  expect_variants_valid("paper_table1.yaml", {"cross_r1", "cross_r2", "pca3", "pca5", "integral"});
+  expect_variants_valid(
+      "paper_table1.yaml",
+      {"cross_r1", "cross_r2", "pca3", "pca5", "integral", "recorded", "recorded_cross_r1",
+       "recorded_cross_r2", "recorded_pca3", "recorded_pca5", "recorded_integral"});
   for (const std::string variant : {"cross_r1", "pca5"}) {
     facet::LoadOptions options;
     options.variant = variant;
@@ -76,7 +79,7 @@ TEST(PaperGraphs, Table1ReportsTheNormalDeviationOfEveryMethod) {
 }
 
 TEST(PaperGraphs, Table2ReportsTheStabilityOfAStaticScene) {
-  expect_variants_valid("paper_table2.yaml", {"convex", "iou"});
+  expect_variants_valid("paper_table2.yaml", {"convex", "iou", "recorded"});
   const facet::test::TempDir dir("facet-paper-table2");
   facet::LoadOptions options;
   options.params = {{"frames", "3"}, {"output", dir.path().string()}};
@@ -93,6 +96,23 @@ TEST(PaperGraphs, Table2ReportsTheStabilityOfAStaticScene) {
   EXPECT_LT(metrics.at("centroid_max_mm").at(0), 20.0);
   EXPECT_TRUE(fs::exists(dir.path() / "labels"));
   EXPECT_TRUE(fs::exists(dir.path() / "scene" / "depth"));
+}
+
+TEST(PaperGraphs, BothTablesRunOnTheBundledRecording) {
+  // The two bundled YCB-Video frames: one pair of consecutive frames to compare.
+  const facet::test::TempDir dir("facet-paper-recorded");
+  facet::LoadOptions options;
+  options.variant = "recorded";
+  options.params = {{"output", dir.path().string()}};
+  const auto segments = run_graph("paper_table2.yaml", options, 2, "stability");
+  ASSERT_EQ(segments.count("compared"), 1u);
+  EXPECT_EQ(segments.at("compared"), (std::vector<double>{0.0, 1.0}));
+  EXPECT_GT(segments.at("segments").at(0), 0.0);
+  options.params = {};
+  options.variant = "recorded_cross_r2";
+  const auto normals = run_graph("paper_table1.yaml", options, 2, "stability");
+  ASSERT_EQ(normals.count("deviation_avg_deg"), 1u);
+  EXPECT_EQ(normals.at("points").at(0), 100.0);  // the table patch is valid in both frames
 }
 
 TEST(PaperGraphs, Fig6WritesTheEdgeMapsOfTheVariants) {
