@@ -9,23 +9,18 @@
 #include "facet/error.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
+#include "label_boxes.hpp"
 
 namespace facet::eval {
 namespace {
 
 using facet::testing::StageRunner;
 
-// A 40x30 image with rectangular segments.
-struct Box {
-  std::int32_t id;
-  cv::Rect rect;
-};
+using Box = facet::test::LabelBox;
 
+// A 40x30 image with rectangular segments.
 cv::Mat label_image(std::initializer_list<Box> boxes) {
-  cv::Mat labels = cv::Mat::zeros(30, 40, CV_32SC1);
-  for (const Box& box : boxes)
-    labels(box.rect).setTo(box.id);
-  return labels;
+  return facet::test::label_boxes({40, 30}, boxes);
 }
 
 // A flat wall 1 m away seen by a pinhole camera with f = 100 px: pixel (x, y) is the point

@@ -7,21 +7,17 @@
 #include "facet/error.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
+#include "label_boxes.hpp"
 #include "track/track_labels.hpp"
 
 namespace facet::track {
 namespace {
 
-struct Box {
-  std::int32_t id;
-  cv::Rect rect;
-};
+using Box = facet::test::LabelBox;
 
+// One 60x40 frame of rectangular segments.
 cv::Mat frame(std::initializer_list<Box> boxes) {
-  cv::Mat labels = cv::Mat::zeros(40, 60, CV_32SC1);
-  for (const Box& box : boxes)
-    labels(box.rect).setTo(box.id);
-  return labels;
+  return facet::test::label_boxes({60, 40}, boxes);
 }
 
 // The track id at the centre of `rect` (where the object is in that frame).
