@@ -37,12 +37,13 @@ StageSpec TrackLabels::spec() {
              "iou = |i&j| / |i|j|.",
              {.choices = {std::string("mean_ratio"), std::string("iou")},
               .origin = "mean_ratio: the authors' later code"})
-      .param("min_overlap", 0.3, "A segment continues a track when their overlap is above this.",
-             {.min = 0.0, .max = 1.0})
+      .param(
+          "min_overlap", 0.3, "A segment continues a track when their overlap is above this.",
+          {.min = 0.0, .max = 1.0, .origin = "not tuned: well below the ~0.95 of a static scene"})
       .param("memory_frames", 10,
              "Frames a lost track is remembered and can still be continued; 0 = forgotten the "
              "first frame it is not seen.",
-             {.unit = "frames", .min = 0})
+             {.unit = "frames", .min = 0, .origin = "not tuned: 1/3 s at 30 Hz"})
       .concurrency(Concurrency::serial);
 }
 
