@@ -56,10 +56,9 @@ void expect_variants_valid(const std::string& name, const std::vector<std::strin
 }
 
 TEST(PaperGraphs, Table1ReportsTheNormalDeviationOfEveryMethod) {
-  expect_variants_valid(
-      "paper_table1.yaml",
-      {"cross_r1", "cross_r2", "pca3", "pca5", "integral", "recorded", "recorded_cross_r1",
-       "recorded_cross_r2", "recorded_pca3", "recorded_pca5", "recorded_integral"});
+  const std::vector<std::string> methods = {"cross_r1", "cross_r2", "pca3", "pca5", "integral"};
+  expect_variants_valid("paper_table1.yaml", methods);
+  expect_variants_valid("paper_table1_recorded.yaml", methods);
   for (const std::string variant : {"cross_r1", "pca5"}) {
     facet::LoadOptions options;
     options.variant = variant;
@@ -108,9 +107,7 @@ TEST(PaperGraphs, BothTablesRunOnTheBundledRecording) {
   ASSERT_EQ(segments.count("compared"), 1u);
   EXPECT_EQ(segments.at("compared"), (std::vector<double>{0.0, 1.0}));
   EXPECT_GT(segments.at("segments").at(0), 0.0);
-  options.params = {};
-  options.variant = "recorded_cross_r2";
-  const auto normals = run_graph("paper_table1.yaml", options, 2, "stability");
+  const auto normals = run_graph("paper_table1_recorded.yaml", {}, 2, "stability");
   ASSERT_EQ(normals.count("deviation_avg_deg"), 1u);
   EXPECT_EQ(normals.at("points").at(0), 100.0);  // the table patch is valid in both frames
 }
