@@ -56,7 +56,8 @@ class OpenNi2Source final : public Stage {
   CameraIntrinsics camera_;
   DepthMode mode_;
   std::int64_t frames_in_recording_ = 0;  // 0 = unknown, or a device
-  std::int64_t frames_read_ = 0;
+  std::int64_t last_file_frame_ = 0;      // the recording's number of the last frame passed on
+  bool file_finished_ = false;            // the recording's last frame was passed on
   FrameDrops drops_;
   std::unique_ptr<Session> session_;
 };
