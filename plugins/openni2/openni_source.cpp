@@ -220,14 +220,14 @@ void OpenNi2Source::start_session() {
     const std::string reason = openni_last_error();
     if (recording_) {
       throw StageError("cannot play recording '" + uri_ + "': OpenNI2 says: " + reason +
-                       " (is it an .oni file OpenNI2 wrote?)");
+                       " (is it an .oni recording?)");
     }
     if (uri_.empty()) {
       throw StageError("no OpenNI2 device to open (uri \"\" = the first device): OpenNI2 says: " +
                        reason + "; `facet doctor` lists the drivers and devices OpenNI2 finds");
     }
     throw StageError("cannot open OpenNI2 device '" + uri_ + "': OpenNI2 says: " + reason +
-                     " (unplugged, or busy in another program?; `facet doctor` lists devices)");
+                     " (unplugged, or busy in another program? `facet doctor` lists the devices)");
   }
   const openni::SensorInfo* depth_sensor = device.getSensorInfo(openni::SENSOR_DEPTH);
   if (depth_sensor == nullptr) throw StageError(what() + " has no depth sensor");
