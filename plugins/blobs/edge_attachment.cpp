@@ -1,7 +1,8 @@
 #include "blobs/edge_attachment.hpp"
 
-#include <array>
+#include <algorithm>
 #include <cstddef>
+#include <numeric>
 #include <vector>
 
 namespace facet::blobs {
@@ -14,112 +15,150 @@ bool close(const float* a, const float* b, float max_squared_m2) {
   return dx * dx + dy * dy + dz * dz < max_squared_m2;
 }
 
-// Ids in raster order of each region's first pixel, as grow_euclidean_regions gives them.
-std::int32_t renumber_in_raster_order(cv::Mat& labels, std::int32_t count) {
-  std::vector<std::int32_t> new_id(static_cast<std::size_t>(count) + 1, 0);
-  std::int32_t next = 0;
-  auto* label = labels.ptr<std::int32_t>();
-  const std::size_t total = labels.total();
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::int32_t id = label[i];
-    if (id == 0) continue;
-    std::int32_t& mapped = new_id[static_cast<std::size_t>(id)];
-    if (mapped == 0) mapped = ++next;
-    label[i] = mapped;
+// Marks the pixels of an edge-only region too small to keep, until the end of the pass.
+constexpr std::int32_t kTooSmall = -1;
+
+class EdgeGrid {
+ public:
+  EdgeGrid(cv::Mat& labels, const cv::Mat& edges, const cv::Mat& xyz, float max_distance_m)
+      : rows_(edges.rows),
+        cols_(edges.cols),
+        label_(labels.ptr<std::int32_t>()),
+        edge_(edges.ptr<std::uint8_t>()),
+        point_(xyz.ptr<float>()),
+        max_squared_(max_distance_m * max_distance_m) {}
+
+  std::int32_t* label() { return label_; }
+  bool is_edge(int i) const { return edge_[i] != 0; }
+  bool linked(int a, int b) const {
+    return close(point_ + 3 * static_cast<std::ptrdiff_t>(a),
+                 point_ + 3 * static_cast<std::ptrdiff_t>(b), max_squared_);
   }
-  return next;
+  // Calls visit(n) for each 8-neighbour n of pixel i, in raster order, until visit returns true.
+  template <class Visit>
+  void neighbours(int i, Visit visit) const {
+    const int y = i / cols_;
+    const int x = i % cols_;
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int ny = y + dy;
+      if (ny < 0 || ny >= rows_) continue;
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx;
+        if ((dx == 0 && dy == 0) || nx < 0 || nx >= cols_) continue;
+        if (visit(ny * cols_ + nx)) return;
+      }
+    }
+  }
+  // Spreads the labels of the pixels in `queue` breadth first to the free, linked edge pixels,
+  // appending each pixel it labels to `queue`.
+  void spread(std::vector<std::int32_t>& queue) {
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int i = queue[head];
+      neighbours(i, [&](int n) {
+        if (edge_[n] != 0 && label_[n] == 0 && linked(i, n)) {
+          label_[n] = label_[i];
+          queue.push_back(n);
+        }
+        return false;
+      });
+    }
+  }
+
+ private:
+  int rows_;
+  int cols_;
+  std::int32_t* label_;
+  const std::uint8_t* edge_;
+  const float* point_;
+  float max_squared_;
+};
+
+// Ids back in raster order of each blob's first pixel (attached edge pixels may come before a
+// blob's first patch pixel); a pass over the image only when the order changed.
+void restore_raster_order(EuclideanRegions& blobs) {
+  std::vector<std::int32_t> by_first(static_cast<std::size_t>(blobs.count));
+  std::iota(by_first.begin(), by_first.end(), 1);
+  std::sort(by_first.begin(), by_first.end(), [&](std::int32_t a, std::int32_t b) {
+    return blobs.first_px[static_cast<std::size_t>(a)] <
+           blobs.first_px[static_cast<std::size_t>(b)];
+  });
+  std::vector<std::int32_t> new_id(static_cast<std::size_t>(blobs.count) + 1, 0);
+  bool same = true;
+  for (std::size_t rank = 0; rank < by_first.size(); ++rank) {
+    new_id[static_cast<std::size_t>(by_first[rank])] = static_cast<std::int32_t>(rank + 1);
+    same = same && by_first[rank] == static_cast<std::int32_t>(rank + 1);
+  }
+  if (same) return;
+  auto* label = blobs.labels.ptr<std::int32_t>();
+  const std::size_t total = blobs.labels.total();
+  for (std::size_t i = 0; i < total; ++i)
+    label[i] = new_id[static_cast<std::size_t>(label[i])];
+  std::vector<std::int64_t> first(blobs.first_px.size(), -1);
+  for (std::size_t id = 1; id < first.size(); ++id)
+    first[static_cast<std::size_t>(new_id[id])] = blobs.first_px[id];
+  blobs.first_px = std::move(first);
 }
 
 }  // namespace
 
-EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges, const cv::Mat& xyz,
+EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
+                                  std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
                                   float max_distance_m, std::int64_t min_size_px) {
-  const int rows = edges.rows;
-  const int cols = edges.cols;
-  const float max_squared = max_distance_m * max_distance_m;
-  auto* label = blobs.labels.ptr<std::int32_t>();
-  const auto* edge = edges.ptr<std::uint8_t>();
-  const auto* point = xyz.ptr<float>();
+  EdgeGrid grid(blobs.labels, edges, xyz, max_distance_m);
+  std::int32_t* label = grid.label();
   EdgeAttachment result;
+  bool reordered = false;
+  const auto note_first = [&](std::int32_t id, int i) {
+    std::int64_t& first = blobs.first_px[static_cast<std::size_t>(id)];
+    if (i < first) {
+      first = i;
+      reordered = true;
+    }
+  };
 
   // Breadth first from the blobs: an edge pixel goes to the blob that reaches it in the fewest
-  // steps. The first step is taken from the edge pixels' side, which are few, rather than from
-  // every blob pixel: an edge pixel next to a blob joins its first neighbour in raster order
-  // that is a blob pixel close enough; the steps after it spread from those pixels in turn.
+  // steps. The first step is taken from the edge pixels' side: an edge pixel next to a blob
+  // joins its first neighbour in raster order that is a patch pixel of a blob close enough.
   std::vector<std::int32_t> queue;
-  const auto free_edge = [&](int y, int x) {
-    const std::size_t i =
-        static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(x);
-    return edge[i] != 0 && label[i] == 0;
-  };
-  for (int y = 0; y < rows; ++y) {
-    for (int x = 0; x < cols; ++x) {
-      const int i = y * cols + x;
-      if (edge[i] == 0 || label[i] != 0) continue;
-      std::int32_t owner = 0;
-      for (int dy = -1; dy <= 1 && owner == 0; ++dy) {
-        for (int dx = -1; dx <= 1 && owner == 0; ++dx) {
-          const int ny = y + dy;
-          const int nx = x + dx;
-          if (ny < 0 || ny >= rows || nx < 0 || nx >= cols) continue;
-          const int n = ny * cols + nx;
-          // Only blob pixels that were blobs before this pass (not edge pixels claimed in it).
-          if (label[n] == 0 || edge[n] != 0) continue;
-          if (close(point + 3 * static_cast<std::ptrdiff_t>(i),
-                    point + 3 * static_cast<std::ptrdiff_t>(n), max_squared))
-            owner = label[n];
-        }
-      }
-      if (owner == 0) continue;
-      label[i] = owner;
-      ++result.attached_px;
-      queue.push_back(i);
-    }
+  for (const std::int32_t i : edge_pixels) {
+    std::int32_t owner = 0;
+    grid.neighbours(i, [&](int n) {
+      if (label[n] > 0 && !grid.is_edge(n) && grid.linked(i, n)) owner = label[n];
+      return owner != 0;
+    });
+    if (owner == 0) continue;
+    label[i] = owner;
+    queue.push_back(i);
   }
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const int i = queue[head];
-    const int y = i / cols;
-    const int x = i % cols;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int ny = y + dy;
-        const int nx = x + dx;
-        if (ny < 0 || ny >= rows || nx < 0 || nx >= cols || !free_edge(ny, nx)) continue;
-        const int n = ny * cols + nx;
-        if (!close(point + 3 * static_cast<std::ptrdiff_t>(i),
-                   point + 3 * static_cast<std::ptrdiff_t>(n), max_squared))
-          continue;
-        label[n] = label[i];
-        ++result.attached_px;
-        queue.push_back(n);
-      }
-    }
-  }
+  grid.spread(queue);
+  result.attached_px = static_cast<std::int64_t>(queue.size());
+  for (const std::int32_t i : queue)
+    note_first(label[i], i);
 
-  // The edge pixels no blob reached: blobs of their own when large enough.
-  cv::Mat leftover(edges.size(), CV_8UC1);
-  auto* left = leftover.ptr<std::uint8_t>();
-  const std::size_t total = edges.total();
-  bool any = false;
-  for (std::size_t i = 0; min_size_px >= 0 && i < total; ++i) {
-    left[i] = edge[i] != 0 && label[i] == 0 ? 1 : 0;
-    any = any || left[i] != 0;
-  }
-  if (any) {
-    const EuclideanRegions extra =
-        grow_euclidean_regions(leftover, xyz, max_distance_m, min_size_px);
-    if (extra.count > 0) {
-      const auto* extra_label = extra.labels.ptr<std::int32_t>();
-      for (std::size_t i = 0; i < total; ++i) {
-        if (extra_label[i] != 0) label[i] = blobs.count + extra_label[i];
-      }
-      result.edge_only_blobs = extra.count;
-      blobs.count += extra.count;
+  // The edge pixels no blob reached: blobs of their own when large enough. In raster order, a
+  // region's seed is its first pixel.
+  std::vector<std::int32_t> region;
+  std::vector<std::int32_t> too_small;
+  for (const std::int32_t seed : edge_pixels) {
+    if (min_size_px < 0) break;
+    if (label[seed] != 0) continue;
+    region.assign(1, seed);
+    label[seed] = blobs.count + 1;
+    grid.spread(region);
+    if (static_cast<std::int64_t>(region.size()) >= min_size_px) {
+      ++blobs.count;
+      ++result.edge_only_blobs;
+      blobs.first_px.push_back(seed);
+      reordered = reordered || blobs.count > 1;
+    } else {
+      for (const std::int32_t i : region)
+        label[i] = kTooSmall;
+      too_small.insert(too_small.end(), region.begin(), region.end());
     }
   }
-  if (result.attached_px > 0 || result.edge_only_blobs > 0) {
-    blobs.count = renumber_in_raster_order(blobs.labels, blobs.count);
-  }
+  for (const std::int32_t i : too_small)
+    label[i] = 0;
+  if (reordered) restore_raster_order(blobs);
   return result;
 }
 

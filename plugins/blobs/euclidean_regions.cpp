@@ -100,6 +100,7 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
   // Ids for the roots of large enough sets, in raster order; every pixel is written once.
   EuclideanRegions out;
   out.labels.create(rows, cols, CV_32SC1);
+  out.first_px.push_back(-1);
   auto* label = out.labels.ptr<std::int32_t>();
   std::vector<std::int32_t>& id_of_root = size_px;  // reused: a root's size becomes its id
   for (std::size_t i = 0; i < total; ++i) {
@@ -108,7 +109,10 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
       continue;
     }
     const std::size_t root = sets.root(i);
-    if (root == i) id_of_root[i] = size_px[i] >= min_size_px ? ++out.count : 0;
+    if (root == i) {
+      id_of_root[i] = size_px[i] >= min_size_px ? ++out.count : 0;
+      if (id_of_root[i] != 0) out.first_px.push_back(static_cast<std::int64_t>(i));
+    }
     label[i] = id_of_root[root];
   }
   return out;

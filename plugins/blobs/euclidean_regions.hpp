@@ -4,12 +4,16 @@
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <vector>
 
 namespace facet::blobs {
 
 struct EuclideanRegions {
   cv::Mat labels;  // CV_32SC1, 1..count in raster order of each region's first pixel; 0 = none
   std::int32_t count = 0;
+  // Raster index of each region's first pixel, by id (entry 0 unused), as the growing and the
+  // edge attachment leave them; the steps that drop blobs do not keep it.
+  std::vector<std::int64_t> first_px;
 };
 
 // mask: CV_8UC1, non-zero = pixel takes part (it must have a finite point). xyz: CV_32FC3,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "blobs/blob_support.hpp"
 #include "blobs/edge_attachment.hpp"
@@ -128,6 +129,7 @@ void GrowBlobs::process(ProcessContext& ctx) {
   }
   cv::Mat mask(patches.labels.size(), CV_8UC1);
   cv::Mat edges;
+  std::vector<std::int32_t> edge_pixels;  // raster indices of the edge pixels
   if (plane_labels != nullptr) edges.create(patches.labels.size(), CV_8UC1);
   for (int row = 0; row < mask.rows; ++row) {
     const auto* label = patches.labels.ptr<std::int32_t>(row);
@@ -140,7 +142,9 @@ void GrowBlobs::process(ProcessContext& ctx) {
       const bool valid = std::isfinite(p[3 * col]) && std::isfinite(p[3 * col + 1]) &&
                          std::isfinite(p[3 * col + 2]);
       out[col] = valid && label[col] > 0 ? 1 : 0;
-      if (edge != nullptr) edge[col] = valid && label[col] <= 0 && plane[col] == 0 ? 1 : 0;
+      if (edge == nullptr) continue;
+      edge[col] = valid && label[col] <= 0 && plane[col] == 0 ? 1 : 0;
+      if (edge[col] != 0) edge_pixels.push_back(row * mask.cols + col);
     }
   }
   EuclideanRegions regions = grow_euclidean_regions(mask, xyz, max_distance_m_, min_size_px_);
@@ -151,7 +155,7 @@ void GrowBlobs::process(ProcessContext& ctx) {
     // (a table seen from its own height) as objects.
     const bool have_plane =
         ctx.has_input("planes") && !ctx.input<SupportPlanes>("planes").planes.empty();
-    attachment = attach_edge_pixels(regions, edges, xyz, max_distance_m_,
+    attachment = attach_edge_pixels(regions, edges, edge_pixels, xyz, max_distance_m_,
                                     have_plane ? min_size_px_ : std::int64_t{-1});
   }
   DroppedBlobs dropped;

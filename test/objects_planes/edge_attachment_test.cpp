@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace {
 
@@ -31,6 +32,16 @@ EuclideanRegions blobs_of(const cv::Mat& patch_mask, const cv::Mat& xyz) {
   return grow_euclidean_regions(patch_mask, xyz, kDistanceM, 1);
 }
 
+// attach_edge_pixels with the edge pixels listed in raster order, as grow.blobs lists them.
+facet::blobs::EdgeAttachment attach(EuclideanRegions& blobs, const cv::Mat& edges,
+                                    const cv::Mat& xyz, std::int64_t min_size_px) {
+  std::vector<std::int32_t> pixels;
+  for (int i = 0; i < static_cast<int>(edges.total()); ++i) {
+    if (edges.ptr<std::uint8_t>()[i] != 0) pixels.push_back(i);
+  }
+  return attach_edge_pixels(blobs, edges, pixels, xyz, kDistanceM, min_size_px);
+}
+
 TEST(EdgeAttachment, AnEdgeBandBetweenTwoBlobsIsSharedAndKeepsThemApart) {
   // Columns 0-9 and 16-25 are patches, 10-15 an edge band: its closer half goes to each side.
   const cv::Mat xyz = flat_points(8, 26, 1.0F);
@@ -42,7 +53,7 @@ TEST(EdgeAttachment, AnEdgeBandBetweenTwoBlobsIsSharedAndKeepsThemApart) {
 
   EuclideanRegions blobs = blobs_of(patches, xyz);
   ASSERT_EQ(blobs.count, 2);
-  const auto result = attach_edge_pixels(blobs, edges, xyz, kDistanceM, 5);
+  const auto result = attach(blobs, edges, xyz, 5);
   EXPECT_EQ(blobs.count, 2);
   EXPECT_EQ(result.attached_px, 8 * 6);
   EXPECT_EQ(result.edge_only_blobs, 0);
@@ -62,7 +73,7 @@ TEST(EdgeAttachment, EdgeOnlyObjectsBecomeBlobsWhenLargeEnough) {
   edges(cv::Rect(33, 15, 2, 2)).setTo(1);
 
   EuclideanRegions blobs = blobs_of(patches, xyz);
-  const auto result = attach_edge_pixels(blobs, edges, xyz, kDistanceM, 10);
+  const auto result = attach(blobs, edges, xyz, 10);
   EXPECT_EQ(result.attached_px, 0);
   EXPECT_EQ(result.edge_only_blobs, 1);
   EXPECT_EQ(blobs.count, 2);
@@ -80,7 +91,7 @@ TEST(EdgeAttachment, NegativeMinimumSizeMakesNoEdgeOnlyBlobs) {
   edges(cv::Rect(10, 0, 2, 10)).setTo(1);   // touches the blob: joins it
   edges(cv::Rect(20, 5, 12, 12)).setTo(1);  // apart: stays out
   EuclideanRegions blobs = blobs_of(patches, xyz);
-  const auto result = attach_edge_pixels(blobs, edges, xyz, kDistanceM, -1);
+  const auto result = attach(blobs, edges, xyz, -1);
   EXPECT_EQ(result.attached_px, 20);
   EXPECT_EQ(result.edge_only_blobs, 0);
   EXPECT_EQ(blobs.count, 1);
@@ -96,7 +107,7 @@ TEST(EdgeAttachment, IdsStayInRasterOrderOfTheFirstPixel) {
   edges(cv::Rect(12, 0, 6, 6)).setTo(1);
 
   EuclideanRegions blobs = blobs_of(patches, xyz);
-  attach_edge_pixels(blobs, edges, xyz, kDistanceM, 5);
+  attach(blobs, edges, xyz, 5);
   EXPECT_EQ(blobs.count, 2);
   EXPECT_EQ(blobs.labels.at<std::int32_t>(0, 12), 1);
   EXPECT_EQ(blobs.labels.at<std::int32_t>(12, 0), 2);
@@ -114,7 +125,7 @@ TEST(EdgeAttachment, ADepthJumpStopsTheAttachment) {
   edges.colRange(10, 13).setTo(1);
 
   EuclideanRegions blobs = blobs_of(patches, xyz);
-  const auto result = attach_edge_pixels(blobs, edges, xyz, kDistanceM, 100);
+  const auto result = attach(blobs, edges, xyz, 100);
   EXPECT_EQ(result.attached_px, 0);
   EXPECT_EQ(blobs.count, 1);
   EXPECT_EQ(cv::countNonZero(blobs.labels), 100);
