@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
@@ -30,10 +29,16 @@ std::vector<std::uint8_t> read_bytes(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, error)) {
     throw StageError("cannot read " + quoted(file) + ": file not found");
   }
+  // One read of the known size: a stream iterator would grow the buffer byte by byte, and this
+  // runs for every frame.
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (error) throw StageError("cannot read " + quoted(file) + ": " + error.message());
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
   std::ifstream in(file, std::ios::binary);
-  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                  std::istreambuf_iterator<char>());
-  if (in.bad()) throw StageError("cannot read " + quoted(file) + ": read error");
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  if (!in || in.gcount() != static_cast<std::streamsize>(bytes.size())) {
+    throw StageError("cannot read " + quoted(file) + ": read error");
+  }
   if (bytes.empty()) throw StageError("cannot read " + quoted(file) + ": the file is empty");
   return bytes;
 }
