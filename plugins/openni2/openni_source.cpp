@@ -64,6 +64,8 @@ std::string frame_stem(std::int64_t index) {
 }
 
 constexpr std::chrono::milliseconds kStopGrace{100};
+// How long a recording that is closed unread waits for its player thread's first frame.
+constexpr int kPlayerStartTimeout_ms = 2000;
 
 FramePolicy policy_for(const std::string& param, bool recording) {
   if (param == "latest") return FramePolicy::latest;
@@ -85,9 +87,11 @@ struct OpenNi2Source::Session {
   openni::Device device;
   openni::VideoStream stream;
   bool started = false;
-  bool live = false;  // a device, not a recording
+  bool live = false;             // a device, not a recording
+  bool delivered_frame = false;  // a frame was read, so the player thread of a recording runs
 
   ~Session() {
+    if (!live && device.isValid() && !delivered_frame) let_the_player_thread_start();
     if (stream.isValid()) {
       if (started) {
         stream.stop();
@@ -100,6 +104,30 @@ struct OpenNi2Source::Session {
       stream.destroy();
     }
     if (device.isValid()) device.close();
+  }
+
+  // OpenNI2's file player marks itself running only once its thread is first scheduled, so a
+  // close() that comes before that is undone: the player thread spins on, close() cancels it
+  // after 3 s, and the driver is unloaded under the cancelled thread, which crashes the process.
+  // Closing a recording right after opening it (a refused video mode, a graph that stops before
+  // its first frame) on a loaded machine does that. A frame comes only from a running player
+  // thread, so one is waited for before closing.
+  void let_the_player_thread_start() {
+    if (!stream.isValid()) {
+      std::this_thread::sleep_for(kStopGrace);  // no stream to wait on: give the thread time
+      return;
+    }
+    if (!started) {
+      if (stream.start() != openni::STATUS_OK) return;
+      started = true;
+    }
+    openni::VideoStream* streams[] = {&stream};
+    int ready = -1;
+    if (openni::OpenNI::waitForAnyStream(streams, 1, &ready, kPlayerStartTimeout_ms) ==
+        openni::STATUS_OK) {
+      openni::VideoFrameRef frame;
+      stream.readFrame(&frame);
+    }
   }
 };
 
@@ -345,6 +373,7 @@ void OpenNi2Source::process(ProcessContext& ctx) {
     throw StageError("cannot read a frame from " + what() +
                      ": OpenNI2 says: " + openni_last_error());
   }
+  session_->delivered_frame = true;
   if (policy_ == FramePolicy::latest) {
     // Drain what queued up while the graph worked on the previous frame; keep the newest.
     openni::VideoFrameRef newer;
