@@ -56,14 +56,16 @@ void append_crc(std::vector<std::uint8_t>& out, std::size_t chunk_type_offset) {
   append_u32(out, libdeflate_crc32(0, out.data() + chunk_type_offset, length));
 }
 
+// PNG's Paeth predictor: of left, up and up-left, the one closest to left + up - up_left (ties
+// in that order). Written with selects instead of branches: on depth images the choice is
+// close to random, and mispredicted branches made this the decoder's hottest loop.
 std::uint8_t paeth_predictor(int left, int up, int up_left) {
-  const int estimate = left + up - up_left;
-  const int to_left = std::abs(estimate - left);
-  const int to_up = std::abs(estimate - up);
-  const int to_up_left = std::abs(estimate - up_left);
-  if (to_left <= to_up && to_left <= to_up_left) return static_cast<std::uint8_t>(left);
-  if (to_up <= to_up_left) return static_cast<std::uint8_t>(up);
-  return static_cast<std::uint8_t>(up_left);
+  const int to_left = std::abs(up - up_left);  // |estimate - left|
+  const int to_up = std::abs(left - up_left);
+  const int to_up_left = std::abs(left + up - 2 * up_left);
+  const int left_or_up = to_up < to_left ? up : left;
+  const int closest = std::min(to_left, to_up);
+  return static_cast<std::uint8_t>(to_up_left < closest ? up_left : left_or_up);
 }
 
 // One row of `image` as PNG stores it: samples big-endian, colour as RGB.
@@ -130,43 +132,64 @@ void filter_row(Filter filter, const std::uint8_t* row, const std::uint8_t* prev
   }
 }
 
-// Undoes the filter of one row in place. `previous` is the row above, already unfiltered, or
-// nullptr for the first row (which the specification treats as a row of zeros).
+// Undoes the filter of one row in place, for pixels of kPixelBytes bytes. `previous` is the row
+// above, already unfiltered, or nullptr for the first row (which the specification treats as a
+// row of zeros). Every byte depends on the one a pixel to its left; that neighbour is carried in
+// `left` rather than read back from the row, which would wait on the store just made.
+template <std::size_t kPixelBytes>
+void unfilter_row(std::uint8_t filter, std::uint8_t* row, const std::uint8_t* previous,
+                  std::size_t row_bytes) {
+  static const std::uint8_t kZeros[kPixelBytes] = {};
+  if (filter > 4) {
+    throw FormatError("row filter " + std::to_string(filter) + " is not one of PNG's 0-4");
+  }
+  if (filter == 0 || (filter == 2 && previous == nullptr)) return;
+  if (filter == 2) {
+    for (std::size_t i = 0; i < row_bytes; ++i)
+      row[i] = static_cast<std::uint8_t>(row[i] + previous[i]);
+    return;
+  }
+  std::uint8_t left[kPixelBytes] = {};
+  if (filter == 1 || (filter == 4 && previous == nullptr)) {  // Paeth predicts from the left here
+    for (std::size_t i = 0; i + kPixelBytes <= row_bytes; i += kPixelBytes) {
+      for (std::size_t k = 0; k < kPixelBytes; ++k)
+        row[i + k] = left[k] = static_cast<std::uint8_t>(row[i + k] + left[k]);
+    }
+    return;
+  }
+  const std::uint8_t* up_row = previous != nullptr ? previous : kZeros;
+  const std::size_t up_step = previous != nullptr ? kPixelBytes : 0;
+  if (filter == 3) {
+    for (std::size_t i = 0, j = 0; i + kPixelBytes <= row_bytes; i += kPixelBytes, j += up_step) {
+      for (std::size_t k = 0; k < kPixelBytes; ++k) {
+        row[i + k] = left[k] =
+            static_cast<std::uint8_t>(row[i + k] + ((left[k] + up_row[j + k]) >> 1));
+      }
+    }
+    return;
+  }
+  std::uint8_t up_left[kPixelBytes] = {};
+  for (std::size_t i = 0; i + kPixelBytes <= row_bytes; i += kPixelBytes) {
+    for (std::size_t k = 0; k < kPixelBytes; ++k) {
+      const std::uint8_t up = previous[i + k];
+      row[i + k] = left[k] =
+          static_cast<std::uint8_t>(row[i + k] + paeth_predictor(left[k], up, up_left[k]));
+      up_left[k] = up;
+    }
+  }
+}
+
 void unfilter_row(std::uint8_t filter, std::uint8_t* row, const std::uint8_t* previous,
                   std::size_t row_bytes, std::size_t pixel_bytes) {
-  switch (filter) {
-    case 0:
-      return;
+  switch (pixel_bytes) {
     case 1:
-      for (std::size_t i = pixel_bytes; i < row_bytes; ++i)
-        row[i] = static_cast<std::uint8_t>(row[i] + row[i - pixel_bytes]);
-      return;
+      return unfilter_row<1>(filter, row, previous, row_bytes);
     case 2:
-      if (previous == nullptr) return;
-      for (std::size_t i = 0; i < row_bytes; ++i)
-        row[i] = static_cast<std::uint8_t>(row[i] + previous[i]);
-      return;
+      return unfilter_row<2>(filter, row, previous, row_bytes);
     case 3:
-      for (std::size_t i = 0; i < row_bytes; ++i) {
-        const int left = i >= pixel_bytes ? row[i - pixel_bytes] : 0;
-        const int up = previous != nullptr ? previous[i] : 0;
-        row[i] = static_cast<std::uint8_t>(row[i] + (left + up) / 2);
-      }
-      return;
-    case 4:
-      if (previous == nullptr) {  // Paeth on the first row predicts from the left only
-        unfilter_row(1, row, previous, row_bytes, pixel_bytes);
-        return;
-      }
-      for (std::size_t i = 0; i < pixel_bytes && i < row_bytes; ++i)
-        row[i] = static_cast<std::uint8_t>(row[i] + previous[i]);
-      for (std::size_t i = pixel_bytes; i < row_bytes; ++i) {
-        row[i] = static_cast<std::uint8_t>(
-            row[i] + paeth_predictor(row[i - pixel_bytes], previous[i], previous[i - pixel_bytes]));
-      }
-      return;
+      return unfilter_row<3>(filter, row, previous, row_bytes);
     default:
-      throw FormatError("row filter " + std::to_string(filter) + " is not one of PNG's 0-4");
+      throw FormatError(std::to_string(pixel_bytes) + " bytes a pixel is not a handled format");
   }
 }
 
