@@ -45,18 +45,30 @@ OrientedBox fit_pca_box(const std::vector<Eigen::Vector3d>& points_m) {
   return box_along_axes(points_m, axes);
 }
 
-double distance_to_box_surface_m(const OrientedBox& box, const Eigen::Vector3d& point_m) {
-  const Eigen::Vector3d local = box.pose.inverse() * point_m;
-  const Eigen::Vector3d outside = (local.cwiseAbs() - box.half_extents_m).cwiseMax(0.0);
+namespace {
+
+// Distance of a point, already in the box's frame, to the surface of a box of `half_extents_m`.
+double distance_in_box_frame_m(const Eigen::Vector3d& local,
+                               const Eigen::Vector3d& half_extents_m) {
+  const Eigen::Vector3d outside = (local.cwiseAbs() - half_extents_m).cwiseMax(0.0);
   if (outside.squaredNorm() > 0.0) return outside.norm();
-  return (box.half_extents_m - local.cwiseAbs()).minCoeff();
+  return (half_extents_m - local.cwiseAbs()).minCoeff();
+}
+
+}  // namespace
+
+double distance_to_box_surface_m(const OrientedBox& box, const Eigen::Vector3d& point_m) {
+  return distance_in_box_frame_m(box.pose.inverse() * point_m, box.half_extents_m);
 }
 
 double box_surface_rms_m(const OrientedBox& box, const std::vector<Eigen::Vector3d>& points_m) {
   if (points_m.empty()) return 0.0;
+  // The pose is inverted once here, not once per point.
+  const Eigen::Matrix3d to_local = box.pose.linear().transpose();
+  const Eigen::Vector3d origin = box.pose.translation();
   double sum_sq = 0.0;
   for (const Eigen::Vector3d& p : points_m) {
-    const double d = distance_to_box_surface_m(box, p);
+    const double d = distance_in_box_frame_m(to_local * (p - origin), box.half_extents_m);
     sum_sq += d * d;
   }
   return std::sqrt(sum_sq / static_cast<double>(points_m.size()));

@@ -33,16 +33,28 @@ struct Priors {
   double size_weight_m = 0.0;
 };
 
+// The points' residuals and Jacobian rows, kept between linearisations to spare allocations.
+struct Workspace {
+  Eigen::Matrix<double, Eigen::Dynamic, kSuperquadricParams> jacobian;
+  Eigen::VectorXd residuals;
+};
+
 Linearisation linearise(const SuperquadricState& state, const std::vector<Eigen::Vector3d>& points,
-                        const Priors& priors) {
+                        const Priors& priors, Workspace& work) {
   Linearisation out;
+  const auto count = static_cast<Eigen::Index>(points.size());
+  work.jacobian.resize(count, kSuperquadricParams);
+  work.residuals.resize(count);
+  const ResidualTerms terms(state);
   ParamVector row;
-  for (const Eigen::Vector3d& point : points) {
-    const double r = radial_residual(state, point, &row);
-    out.hessian.selfadjointView<Eigen::Lower>().rankUpdate(row);
-    out.gradient += r * row;
-    out.point_sum_sq_m2 += r * r;
+  for (Eigen::Index i = 0; i < count; ++i) {
+    work.residuals(i) = radial_residual(terms, points[static_cast<std::size_t>(i)], &row);
+    work.jacobian.row(i) = row.transpose();
   }
+  // One product over all rows instead of a rank-one update per point.
+  out.hessian.noalias() = work.jacobian.transpose() * work.jacobian;
+  out.gradient.noalias() = work.jacobian.transpose() * work.residuals;
+  out.point_sum_sq_m2 = work.residuals.squaredNorm();
   double sum_sq = out.point_sum_sq_m2;
   if (priors.support != nullptr) {
     // One residual with eleven parameters: forward differences are cheap and simple here.
@@ -54,7 +66,7 @@ Linearisation linearise(const SuperquadricState& state, const std::vector<Eigen:
       step(k) = kStep;
       row(k) = (priors.contact_weight * contact_residual_m(state.moved(step), plane) - r) / kStep;
     }
-    out.hessian.selfadjointView<Eigen::Lower>().rankUpdate(row);
+    out.hessian += row * row.transpose();
     out.gradient += r * row;
     sum_sq += r * r;
   }
@@ -66,7 +78,6 @@ Linearisation linearise(const SuperquadricState& state, const std::vector<Eigen:
     out.gradient(k) += priors.size_weight_m * r;
     sum_sq += r * r;
   }
-  out.hessian = out.hessian.selfadjointView<Eigen::Lower>();
   out.cost = 0.5 * sum_sq;
   return out;
 }
@@ -111,7 +122,8 @@ SuperquadricFit fit_superquadric(const std::vector<Eigen::Vector3d>& points_m,
   priors.contact_weight = options.support_weight * all_points;
   priors.initial_log_size = state.log_size;
   priors.size_weight_m = options.size_prior_weight * all_points * state.size_m().mean();
-  Linearisation current = linearise(state, points, priors);
+  Workspace work;
+  Linearisation current = linearise(state, points, priors, work);
   double damping = 1e-3;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     fit.iterations = iteration + 1;
@@ -124,7 +136,7 @@ SuperquadricFit fit_superquadric(const std::vector<Eigen::Vector3d>& points_m,
     const ParamVector step = system.ldlt().solve(-current.gradient);
     if (!step.allFinite()) break;
     const SuperquadricState candidate = state.moved(step);
-    Linearisation next = linearise(candidate, points, priors);
+    Linearisation next = linearise(candidate, points, priors, work);
     if (std::isfinite(next.cost) && next.cost < current.cost) {
       const double gain = (current.cost - next.cost) / std::max(current.cost, 1e-300);
       state = candidate;

@@ -16,10 +16,17 @@ double logit_of_epsilon(double epsilon) {
   return std::log(s / (1.0 - s));
 }
 
-// log(exp(a) + exp(b)) without overflow: F reaches 1e300 and beyond for far points at ε = 0.1.
-double log_add_exp(double a, double b) {
+// log(exp(a) + exp(b)) without overflow (F reaches 1e300 and beyond for far points at ε = 0.1),
+// and the share exp(a) / (exp(a) + exp(b)) of its first term, from the same exponential.
+struct LogSum {
+  double log;
+  double share_of_a;
+};
+LogSum log_add_exp(double a, double b) {
   const double high = std::max(a, b);
-  return high + std::log1p(std::exp(std::min(a, b) - high));
+  const double ratio = std::exp(std::min(a, b) - high);  // the smaller term over the larger
+  const double share_of_high = 1.0 / (1.0 + ratio);
+  return {high + std::log1p(ratio), a >= b ? share_of_high : 1.0 - share_of_high};
 }
 
 Eigen::Matrix3d exp_so3(const Eigen::Vector3d& omega) {
@@ -76,11 +83,28 @@ Superquadric SuperquadricState::to_superquadric() const {
   return sq;
 }
 
+ResidualTerms::ResidualTerms(const SuperquadricState& of)
+    : state(&of),
+      to_local(of.rotation.transpose()),
+      epsilon1(of.epsilon1()),
+      epsilon2(of.epsilon2()) {
+  const double s1 = sigmoid(of.shape1_logit);
+  const double s2 = sigmoid(of.shape2_logit);
+  d_epsilon1 = (kMaxEpsilon - kMinEpsilon) * s1 * (1.0 - s1);
+  d_epsilon2 = (kMaxEpsilon - kMinEpsilon) * s2 * (1.0 - s2);
+}
+
 double radial_residual(const SuperquadricState& state, const Eigen::Vector3d& point_m,
                        ParamVector* gradient) {
-  const double e1 = state.epsilon1();
-  const double e2 = state.epsilon2();
-  const Eigen::Vector3d p = state.rotation.transpose() * (point_m - state.translation_m);
+  return radial_residual(ResidualTerms(state), point_m, gradient);
+}
+
+double radial_residual(const ResidualTerms& terms, const Eigen::Vector3d& point_m,
+                       ParamVector* gradient) {
+  const SuperquadricState& state = *terms.state;
+  const double e1 = terms.epsilon1;
+  const double e2 = terms.epsilon2;
+  const Eigen::Vector3d p = terms.to_local * (point_m - state.translation_m);
   const double length = p.norm();
   const Eigen::Vector3d q(away_from_zero(p.x()), away_from_zero(p.y()), away_from_zero(p.z()));
   // All of F in logarithms: l_k = log|p_k / a_k|.
@@ -89,18 +113,20 @@ double radial_residual(const SuperquadricState& state, const Eigen::Vector3d& po
   const double l3 = std::log(std::abs(q.z())) - state.log_size.z();
   const double log_a = (2.0 / e2) * l1;
   const double log_b = (2.0 / e2) * l2;
-  const double log_s = log_add_exp(log_a, log_b);
+  const LogSum s = log_add_exp(log_a, log_b);
+  const double log_s = s.log;
   const double log_t = (e2 / e1) * log_s;
   const double log_c = (2.0 / e1) * l3;
-  const double log_f = log_add_exp(log_t, log_c);
+  const LogSum f = log_add_exp(log_t, log_c);
+  const double log_f = f.log;
   const double g = std::exp(-0.5 * e1 * log_f);  // F^(-ε1/2): 1 on the surface
   const double residual = length * (1.0 - g);
   if (gradient == nullptr) return residual;
 
   // Shares of the sums: w_a = A / (A + B), w_t = T / F.
-  const double w_a = std::exp(log_a - log_s);
+  const double w_a = s.share_of_a;
   const double w_b = 1.0 - w_a;
-  const double w_t = std::exp(log_t - log_f);
+  const double w_t = f.share_of_a;
   const double w_c = 1.0 - w_t;
   // d log F / d (p, s, ε).
   const double k = 2.0 / e1;
@@ -115,14 +141,10 @@ double radial_residual(const SuperquadricState& state, const Eigen::Vector3d& po
   const double dr_de1 = dr_dlogf * dlogf_de1 + length * g * 0.5 * log_f;
   const double dr_de2 = dr_dlogf * dlogf_de2;
   // Chain through the parametrisation.
-  const double de1 = (kMaxEpsilon - kMinEpsilon) * sigmoid(state.shape1_logit) *
-                     (1.0 - sigmoid(state.shape1_logit));
-  const double de2 = (kMaxEpsilon - kMinEpsilon) * sigmoid(state.shape2_logit) *
-                     (1.0 - sigmoid(state.shape2_logit));
   ParamVector& out = *gradient;
   out.segment<3>(0) = dr_dlogf * dlogf_ds;
-  out(3) = dr_de1 * de1;
-  out(4) = dr_de2 * de2;
+  out(3) = dr_de1 * terms.d_epsilon1;
+  out(4) = dr_de2 * terms.d_epsilon2;
   // p = Rᵀ(x − t): dp/dt = −Rᵀ; with R·exp([ω]×), dp/dω = [p]×, so dr/dω = dr/dp × p.
   out.segment<3>(5) = -(state.rotation * dr_dp);
   out.segment<3>(8) = dr_dp.cross(p);

@@ -40,6 +40,21 @@ struct SuperquadricState {
   Superquadric to_superquadric() const;
 };
 
+// What the radial residual needs of a state that does not depend on the point, computed once
+// per linearisation instead of once per point (the shapes alone cost six exponentials).
+struct ResidualTerms {
+  explicit ResidualTerms(const SuperquadricState& state);
+
+  const SuperquadricState* state;
+  Eigen::Matrix3d to_local;  // Rᵀ: camera frame → superquadric frame
+  double epsilon1, epsilon2;
+  double d_epsilon1, d_epsilon2;  // dε/d(logit)
+};
+
+// radial_residual() for a point, given its state's terms.
+double radial_residual(const ResidualTerms& terms, const Eigen::Vector3d& point_m,
+                       ParamVector* gradient);
+
 // Radial distance of a camera-frame point to the surface: |p| · (1 − F(p)^(−ε1/2)), p the point
 // in the superquadric's frame. F^(ε1/2) scales linearly along rays from the centre, so this is
 // the distance along the ray through the centre (the usual "radial Euclidean" metric derived
