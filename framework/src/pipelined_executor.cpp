@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
@@ -58,10 +59,33 @@ struct Task {
 
 constexpr std::int64_t kNoEnd = std::numeric_limits<std::int64_t>::max();
 
+// One parallel_for() of a stage call, whose chunks the pool's idle workers help with.
+struct ParallelJob {
+  const std::function<void(std::size_t)>* chunk = nullptr;
+  std::size_t chunks = 0;
+  std::size_t next = 0;     // the first chunk nobody has taken yet
+  std::size_t running = 0;  // chunks taken and not yet returned
+  std::exception_ptr error;
+};
+
 }  // namespace
 
 struct PipelinedExecutor::Impl {
   Impl(const ValidatedGraph& graph, PipelineOptions options);
+
+  // The pool as stages borrow it (ProcessContext::parallel_for): chunks run on the calling
+  // thread and on workers that find no stage call to make.
+  class Lending final : public ParallelRunner {
+   public:
+    explicit Lending(Impl& impl) : impl_(impl) {}
+    int concurrency() const override { return impl_.threads_; }
+    void run(std::size_t chunks, const std::function<void(std::size_t)>& chunk) override {
+      impl_.run_parallel(chunks, chunk);
+    }
+
+   private:
+    Impl& impl_;
+  };
 
   RunStats run(const RunOptions& options);
 
@@ -82,6 +106,11 @@ struct PipelinedExecutor::Impl {
 
   void work(int thread);
   void execute(const Task& task, int thread);
+  // Borrowed parallelism: run_parallel() is called without mutex_, run_chunk() with it held
+  // (it releases it while the chunk runs).
+  void run_parallel(std::size_t chunks, const std::function<void(std::size_t)>& chunk);
+  bool help_with_a_chunk(std::unique_lock<std::mutex>& lock);
+  void run_chunk(ParallelJob& job, std::unique_lock<std::mutex>& lock);
   void close_all(std::string& first_error);
 
   const ValidatedGraph& graph_;
@@ -103,8 +132,10 @@ struct PipelinedExecutor::Impl {
   bool latest_ = false;
   bool failed_ = false;
   std::exception_ptr error_;
-  std::vector<char> blocked_;  // find_task(): serial nodes an older frame still needs
-  bool skipped_ = false;       // find_task() marked a node done without a call
+  std::vector<char> blocked_;       // find_task(): serial nodes an older frame still needs
+  bool skipped_ = false;            // find_task() marked a node done without a call
+  std::vector<ParallelJob*> jobs_;  // parallel_for() calls with chunks nobody has taken
+  Lending lending_{*this};
   RunStats stats_;
 };
 
@@ -396,9 +427,57 @@ void PipelinedExecutor::Impl::execute(const Task& task, int thread) {
   watchdog_->end(thread);
 }
 
+void PipelinedExecutor::Impl::run_chunk(ParallelJob& job, std::unique_lock<std::mutex>& lock) {
+  const std::size_t index = job.next++;
+  if (job.next == job.chunks) std::erase(jobs_, &job);
+  ++job.running;
+  lock.unlock();
+  std::exception_ptr error;
+  try {
+    (*job.chunk)(index);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  lock.lock();
+  --job.running;
+  if (error) {
+    if (!job.error) job.error = error;
+    if (job.next < job.chunks) {  // the chunks not yet taken are not started
+      job.next = job.chunks;
+      std::erase(jobs_, &job);
+    }
+  }
+}
+
+bool PipelinedExecutor::Impl::help_with_a_chunk(std::unique_lock<std::mutex>& lock) {
+  if (jobs_.empty()) return false;
+  ParallelJob& job = *jobs_.front();
+  run_chunk(job, lock);
+  if (job.running == 0 && job.next == job.chunks) wake_.notify_all();  // its caller may wait
+  return true;
+}
+
+void PipelinedExecutor::Impl::run_parallel(std::size_t chunks,
+                                           const std::function<void(std::size_t)>& chunk) {
+  if (chunks == 0) return;
+  ParallelJob job;
+  job.chunk = &chunk;
+  job.chunks = chunks;
+  std::unique_lock lock(mutex_);
+  jobs_.push_back(&job);
+  wake_.notify_all();
+  // The caller works through the chunks too, so the call finishes with no worker free.
+  while (job.next < job.chunks)
+    run_chunk(job, lock);
+  wake_.wait(lock, [&job] { return job.running == 0; });
+  if (job.error) std::rethrow_exception(job.error);
+}
+
 void PipelinedExecutor::Impl::work(int thread) {
   std::unique_lock lock(mutex_);
   while (!finished()) {
+    // Chunks first: a stage call waits on them, while a new call can start later.
+    if (help_with_a_chunk(lock)) continue;
     std::optional<Task> task;
     try {
       task = pick();
@@ -458,8 +537,10 @@ RunStats PipelinedExecutor::Impl::run(const RunOptions& options) {
     slot.state.resize(nodes_.size());
     slot.call_ms.resize(nodes_.size());
     slot.contexts.reserve(nodes_.size());
-    for (const auto& node : nodes_)
+    for (const auto& node : nodes_) {
       slot.contexts.emplace_back(node.spec->stage->spec, node.spec->id);
+      if (threads_ > 1) slot.contexts.back().set_parallel_runner(&lending_);
+    }
   }
   blocked_.assign(nodes_.size(), 0);
   used_slots_ = 0;

@@ -29,6 +29,8 @@ struct PipelineProbe {
   std::vector<std::string> overlaps;                        // serial calls that overlapped
   std::vector<std::string> events;                          // "open id", "close id"
   std::int64_t source_calls = 0;
+  int parallelism = 0;  // what ptest.parallel's context said
+  bool helped = false;  // a piece of ptest.parallel ran on another thread
 
   void reset() {
     const std::lock_guard lock(mutex);
@@ -38,6 +40,8 @@ struct PipelineProbe {
     overlaps.clear();
     events.clear();
     source_calls = 0;
+    parallelism = 0;
+    helped = false;
   }
 };
 
@@ -210,7 +214,71 @@ class OrderedSink final : public Stage {
   static inline std::atomic<int> in_call_{0};
 };
 
+// Splits each call into `items` pieces with ProcessContext::parallel_for and checks that every
+// piece ran exactly once. With `wait_for_help`, the first piece waits (up to 10 s) until another
+// thread has run a piece, so that a pool that never lends its workers fails the test instead of
+// passing by luck. `fail_item` >= 0 throws in that piece.
+class ParallelStage final : public Stage {
+ public:
+  static StageSpec spec() {
+    return StageSpec("ptest.parallel", "Splits its work with parallel_for; checks the pieces.")
+        .input<DepthImage>("depth", "Anything.")
+        .output<DepthImage>("depth", "The input, unchanged.")
+        .param("items", 64, "Pieces of work per call.", {.min = 0})
+        .param("wait_for_help", false, "The first piece waits for a piece on another thread.")
+        .param("fail_item", -1, "Throw a StageError in this piece (-1 = never).", {.min = -1})
+        .concurrency(Concurrency::serial);
+  }
+  explicit ParallelStage(const Params& p)
+      : items_(p.get_int("items")),
+        wait_for_help_(p.get_bool("wait_for_help")),
+        fail_item_(p.get_int("fail_item")) {}
+  void process(ProcessContext& ctx) override {
+    std::vector<int> runs(static_cast<std::size_t>(items_), 0);
+    const auto caller = std::this_thread::get_id();
+    std::mutex mutex;
+    std::condition_variable helped;
+    bool other_thread = false;
+    ctx.parallel_for(items_, 1, [&](std::int64_t begin, std::int64_t end) {
+      const bool helper = std::this_thread::get_id() != caller;
+      {
+        const std::lock_guard lock(mutex);
+        if (helper) other_thread = true;
+        helped.notify_all();
+      }
+      for (std::int64_t i = begin; i < end; ++i) {
+        if (i == fail_item_) throw StageError("deliberate failure in item " + std::to_string(i));
+        ++runs[static_cast<std::size_t>(i)];
+      }
+      if (begin == 0 && wait_for_help_) {
+        std::unique_lock lock(mutex);
+        helped.wait_for(lock, std::chrono::seconds(10), [&] { return other_thread; });
+      }
+    });
+    {
+      const std::lock_guard lock(pipeline_probe().mutex);
+      auto& probe = pipeline_probe();
+      probe.parallelism = ctx.parallelism();
+      probe.helped = probe.helped || other_thread;
+      for (std::size_t i = 0; i < runs.size(); ++i) {
+        if (runs[i] != 1) {
+          probe.overlaps.push_back("item " + std::to_string(i) + " ran " + std::to_string(runs[i]) +
+                                   " times");
+        }
+      }
+    }
+    record_frame(ctx);
+    ctx.output_packet("depth", ctx.input_packet("depth"));
+  }
+
+ private:
+  std::int64_t items_;
+  bool wait_for_help_;
+  std::int64_t fail_item_;
+};
+
 inline void add_pipeline_test_stages(Registry& registry) {
+  registry.add<ParallelStage>();
   registry.add<CountingSource>();
   registry.add<PassStage<Concurrency::serial>>();
   registry.add<PassStage<Concurrency::clonable>>();

@@ -270,3 +270,60 @@ TEST_F(PipelinedExecutorTest, AStalledCallIsReportedWithNodeAndFrame) {
 }
 
 }  // namespace
+
+// --- parallelism inside a stage call (ProcessContext::parallel_for) ---
+
+TEST_F(PipelinedExecutorTest, StagesBorrowIdleWorkersForTheirParallelFor) {
+  const auto g = graph({{"source", "ptest.source", {{"frames", std::int64_t{3}}}, {}},
+                        {"parallel", "ptest.parallel", {{"wait_for_help", true}}, {"source"}},
+                        {"sink", "ptest.sink", {}, {"parallel"}}});
+  facet::PipelinedExecutor executor(g, {2, 1});  // one frame at a time: the second thread is idle
+  const auto stats = executor.run({});
+  EXPECT_EQ(stats.frames, 3);
+  const std::lock_guard lock(pipeline_probe().mutex);
+  EXPECT_EQ(pipeline_probe().parallelism, 2);
+  EXPECT_TRUE(pipeline_probe().helped) << "no piece ran on the idle worker";
+  EXPECT_TRUE(pipeline_probe().overlaps.empty()) << pipeline_probe().overlaps.front();
+}
+
+TEST_F(PipelinedExecutorTest, ParallelForCoversEveryItemOnceWhileOtherFramesRun) {
+  // Four threads, frames in flight: the pieces run on whoever is free, in any order.
+  const auto g = graph({{"source", "ptest.source", {{"frames", std::int64_t{30}}}, {}},
+                        {"clone", "ptest.clonable", {{"work_us", std::int64_t{300}}}, {"source"}},
+                        {"parallel", "ptest.parallel", {{"items", std::int64_t{97}}}, {"clone"}},
+                        {"sink", "ptest.sink", {}, {"parallel"}}});
+  facet::PipelinedExecutor executor(g, {4, 6});
+  EXPECT_EQ(executor.run({}).frames, 30);
+  EXPECT_EQ(frames_of("sink"), iota(30));
+  const std::lock_guard lock(pipeline_probe().mutex);
+  EXPECT_EQ(pipeline_probe().parallelism, 4);
+  EXPECT_TRUE(pipeline_probe().overlaps.empty()) << pipeline_probe().overlaps.front();
+}
+
+TEST_F(PipelinedExecutorTest, AFailingPieceFailsTheRunWithItsMessage) {
+  const auto g =
+      graph({{"source", "ptest.source", {{"frames", std::int64_t{5}}}, {}},
+             {"parallel", "ptest.parallel", {{"fail_item", std::int64_t{40}}}, {"source"}},
+             {"sink", "ptest.sink", {}, {"parallel"}}});
+  facet::PipelinedExecutor executor(g, {2, 2});
+  try {
+    executor.run({});
+    ADD_FAILURE() << "the run went through a failing piece";
+  } catch (const std::exception& error) {
+    EXPECT_NE(std::string(error.what()).find("deliberate failure in item 40"), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("parallel"), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(PipelinedExecutorTest, OneThreadRunsParallelForInline) {
+  const auto g = graph({{"source", "ptest.source", {{"frames", std::int64_t{2}}}, {}},
+                        {"parallel", "ptest.parallel", {}, {"source"}},
+                        {"sink", "ptest.sink", {}, {"parallel"}}});
+  facet::PipelinedExecutor executor(g, {1, 1});
+  EXPECT_EQ(executor.run({}).frames, 2);
+  const std::lock_guard lock(pipeline_probe().mutex);
+  EXPECT_EQ(pipeline_probe().parallelism, 1);
+  EXPECT_FALSE(pipeline_probe().helped);
+  EXPECT_TRUE(pipeline_probe().overlaps.empty()) << pipeline_probe().overlaps.front();
+}

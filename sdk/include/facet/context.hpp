@@ -6,6 +6,7 @@
 // list; a name that the stage did not declare is a programming error and throws.
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 
 #include "facet/error.hpp"
 #include "facet/packet.hpp"
+#include "facet/parallel.hpp"
 #include "facet/stage_spec.hpp"
 
 namespace facet {
@@ -64,6 +66,20 @@ class ProcessContext {
   // Sources only: there are no more frames. Outputs set in the same call are discarded.
   void end_of_stream() { end_of_stream_ = true; }
 
+  // --- parallelism (facet/parallel.hpp) ---
+  // Calls body(begin, end) over contiguous ranges that together cover [0, count) exactly once,
+  // each of at least `min_chunk` items (unless count is smaller), on the executor's idle
+  // workers and this thread; returns when all are done. Ranges run in any order and at the same
+  // time, so a body writes only what belongs to its range (rows of an output image, entries of
+  // a pre-sized vector) and the result must not depend on how the range was split. The first
+  // exception a body throws is rethrown here.
+  void parallel_for(std::int64_t count, std::int64_t min_chunk,
+                    const std::function<void(std::int64_t begin, std::int64_t end)>& body) const;
+  // Threads parallel_for() may use at once, this one included.
+  int parallelism() const { return runner_ != nullptr ? runner_->concurrency() : 1; }
+  // The workers themselves, for algorithms that take them (facet::parallel_for); may be null.
+  ParallelRunner* parallel_runner() const { return runner_; }
+
   // --- frame ---
   std::int64_t frame_index() const { return frame_index_; }
   const std::string& node_id() const { return node_id_; }
@@ -77,6 +93,8 @@ class ProcessContext {
   const std::vector<Metric>& metrics() const { return metrics_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
   bool at_end_of_stream() const { return end_of_stream_; }
+  // The workers parallel_for() borrows; nullptr (the default) runs bodies inline.
+  void set_parallel_runner(ParallelRunner* runner) { runner_ = runner; }
 
  private:
   [[noreturn]] void throw_bad_input(std::string_view port, std::string_view expected) const;
@@ -90,6 +108,7 @@ class ProcessContext {
   std::vector<std::string> warnings_;
   std::int64_t frame_index_ = 0;
   bool end_of_stream_ = false;
+  ParallelRunner* runner_ = nullptr;
 };
 
 }  // namespace facet
