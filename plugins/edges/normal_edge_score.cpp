@@ -132,14 +132,22 @@ __attribute__((target_clones("avx2", "default"))) void combine_directions(
   }
 }
 
+// Scores the rows [row_begin, row_end) of the image (those within R of the border stay 0). The
+// products of the R rows above the first are computed first, so that bands of rows can be
+// scored independently.
 template <int R, DirectionCombine Combine>
-void score_image(const NormalPlanes& n, int height, const DotRows& dots, float* direction_sums,
-                 cv::Mat& score) {
+void score_rows(const NormalPlanes& n, int height, int row_begin, int row_end, EdgeWorkspace& work,
+                cv::Mat& score) {
   const int width = n.width;
   const int interior = width - 2 * R;
-  for (int row = 0; row + R < height; ++row) {
+  const DotRows dots(work.dots, R, width);
+  work.sums.resize(static_cast<std::size_t>(kDirectionCount) * static_cast<std::size_t>(width));
+  float* direction_sums = work.sums.data();
+  const int first = std::max(row_begin, R);
+  const int last = std::min(row_end, height - R);
+  for (int row = std::max(0, first - R); row < last; ++row) {
     compute_dot_rows(n, row, R, dots);
-    if (row < R) continue;
+    if (row < first) continue;
     // Pointers to the products of pixel x = R, for the 8 directions: the forward ones at this
     // row, the backward ones where the pixel p - k·d stored them.
     // Per direction the sum over k, forward at this row, backward where the pixel p - k·d
@@ -184,7 +192,7 @@ NormalEdgeScorer::NormalEdgeScorer(int reach_px, DirectionCombine combine)
   }
 }
 
-cv::Mat NormalEdgeScorer::score(const cv::Mat& normals) {
+cv::Mat NormalEdgeScorer::score(const cv::Mat& normals, ParallelRunner* runner) {
   if (normals.type() != CV_32FC3) {
     throw std::invalid_argument("normals must be CV_32FC3");
   }
@@ -193,23 +201,28 @@ cv::Mat NormalEdgeScorer::score(const cv::Mat& normals) {
   if (normals.rows <= 2 * reach_px_ || normals.cols <= 2 * reach_px_) return result;
 
   const NormalPlanes planes = split_planes(normals, planes_);
-  const DotRows dots(dots_, reach_px_, normals.cols);
-  sums_.resize(static_cast<std::size_t>(kDirectionCount) * static_cast<std::size_t>(normals.cols));
-  float* sums = sums_.data();
+  const int height = normals.rows;
   const bool take_min = combine_ == DirectionCombine::min;
-  if (reach_px_ == 1) {
-    if (take_min) {
-      score_image<1, DirectionCombine::min>(planes, normals.rows, dots, sums, result);
+  // Bands of at least 32 rows: each recomputes the R rows of products above it.
+  constexpr std::int64_t kMinBandRows = 32;
+  parallel_for(runner, height, kMinBandRows, [&](std::int64_t begin, std::int64_t end) {
+    const auto work = workspaces_.lease();
+    const int b = static_cast<int>(begin);
+    const int e = static_cast<int>(end);
+    if (reach_px_ == 1) {
+      if (take_min) {
+        score_rows<1, DirectionCombine::min>(planes, height, b, e, *work, result);
+      } else {
+        score_rows<1, DirectionCombine::mean>(planes, height, b, e, *work, result);
+      }
     } else {
-      score_image<1, DirectionCombine::mean>(planes, normals.rows, dots, sums, result);
+      if (take_min) {
+        score_rows<3, DirectionCombine::min>(planes, height, b, e, *work, result);
+      } else {
+        score_rows<3, DirectionCombine::mean>(planes, height, b, e, *work, result);
+      }
     }
-  } else {
-    if (take_min) {
-      score_image<3, DirectionCombine::min>(planes, normals.rows, dots, sums, result);
-    } else {
-      score_image<3, DirectionCombine::mean>(planes, normals.rows, dots, sums, result);
-    }
-  }
+  });
   return result;
 }
 

@@ -9,6 +9,8 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "facet/parallel.hpp"
+
 namespace facet::edges {
 
 enum class DirectionCombine {
@@ -16,14 +18,21 @@ enum class DirectionCombine {
   mean,  // the 'avg' variant: smoother edge images
 };
 
+// The working memory of one band of rows being scored.
+struct EdgeWorkspace {
+  std::vector<float> dots;  // |dot products| of R+1 rows, see the .cpp for the layout
+  std::vector<float> sums;  // one row of per-direction sums for each of the 8 directions
+};
+
 class NormalEdgeScorer {
  public:
   // reach_px: R, the number of pixels averaged along each direction (1 or 3).
   NormalEdgeScorer(int reach_px, DirectionCombine combine);
 
-  // normals: CV_32FC3 (NaN = no normal). Returns the score, CV_32FC1 of the same size.
+  // normals: CV_32FC3 (NaN = no normal). Returns the score, CV_32FC1 of the same size. Bands of
+  // rows are scored on `runner`'s threads when one is given; the result does not depend on it.
   // Not const: the scorer keeps its working memory between calls to avoid reallocations.
-  cv::Mat score(const cv::Mat& normals);
+  cv::Mat score(const cv::Mat& normals, ParallelRunner* runner = nullptr);
 
   int reach_px() const { return reach_px_; }
 
@@ -31,8 +40,7 @@ class NormalEdgeScorer {
   int reach_px_;
   DirectionCombine combine_;
   std::vector<float> planes_;  // normals as three planes (x, y, z), one float per pixel each
-  std::vector<float> dots_;    // |dot products| of R+1 rows, see the .cpp for the layout
-  std::vector<float> sums_;    // one row of per-direction sums for each of the 8 directions
+  WorkspacePool<EdgeWorkspace> workspaces_;
 };
 
 // 255 where score <= threshold (edge), 0 where score > threshold (surface). CV_8UC1.

@@ -49,7 +49,7 @@ void NormalEdgeStage::process(ProcessContext& ctx) {
   }
   EdgeImage output;
   static_cast<FrameHeader&>(output) = input;
-  output.score = scorer_.score(input.normals);
+  output.score = scorer_.score(input.normals, ctx.parallel_runner());
   output.mask = edge_mask(output.score, threshold_);
   const double edge_pixels = cv::countNonZero(output.mask);
   ctx.metric("edge_ratio", edge_pixels / static_cast<double>(output.mask.total()));

@@ -153,7 +153,7 @@ GreyRange auto_grey_range(const cv::Mat& depth) {
 }
 
 cv::Mat render_overlay(const cv::Mat& depth, const cv::Mat& labels, const cv::Mat& edge_mask,
-                       const OverlayStyle& style) {
+                       const OverlayStyle& style, ParallelRunner* runner) {
   CV_Assert(depth.type() == CV_16UC1 || depth.type() == CV_32FC1);
   CV_Assert(labels.empty() || (labels.type() == CV_32SC1 && labels.size() == depth.size()));
   CV_Assert(edge_mask.empty() || (edge_mask.type() == CV_8UC1 && edge_mask.size() == depth.size()));
@@ -166,33 +166,36 @@ cv::Mat render_overlay(const cv::Mat& depth, const cv::Mat& labels, const cv::Ma
   const int cols = depth.cols;
 
   cv::Mat out(depth.size(), CV_8UC3);
-  ColourMemo colour_of;
-  for (int y = 0; y < rows; ++y) {
-    const auto* g = grey.ptr<std::uint8_t>(y);
-    auto* dst = out.ptr<cv::Vec3b>(y);
-    const std::int32_t* ids = labels.empty() ? nullptr : labels.ptr<std::int32_t>(y);
-    const std::int32_t* up = ids != nullptr && y > 0 ? labels.ptr<std::int32_t>(y - 1) : nullptr;
-    const std::int32_t* down =
-        ids != nullptr && y + 1 < rows ? labels.ptr<std::int32_t>(y + 1) : nullptr;
-    const std::uint8_t* mask = edges ? edge_mask.ptr<std::uint8_t>(y) : nullptr;
-    for (int x = 0; x < cols; ++x) {
-      const int base = g[x] * (256 - weight);
-      if (ids == nullptr || ids[x] == 0) {
-        dst[x] = cv::Vec3b(g[x], g[x], g[x]);
-      } else {
-        const Rgb& c = colour_of(ids[x]);
-        dst[x] = cv::Vec3b(static_cast<std::uint8_t>((base + c.b * weight) >> 8),
-                           static_cast<std::uint8_t>((base + c.g * weight) >> 8),
-                           static_cast<std::uint8_t>((base + c.r * weight) >> 8));
-      }
-      // Edge stages mark pixels without depth as edges too; those stay black.
-      if (mask != nullptr && mask[x] != 0 && g[x] != 0) put(dst[x], style.edge_colour);
-      if (style.draw_borders && ids != nullptr && ids[x] != 0 &&
-          is_border(up, ids, down, x, cols)) {
-        put(dst[x], style.border_colour);
+  constexpr std::int64_t kMinBandRows = 32;
+  parallel_for(runner, rows, kMinBandRows, [&](std::int64_t band_begin, std::int64_t band_end) {
+    ColourMemo colour_of;
+    for (int y = static_cast<int>(band_begin); y < static_cast<int>(band_end); ++y) {
+      const auto* g = grey.ptr<std::uint8_t>(y);
+      auto* dst = out.ptr<cv::Vec3b>(y);
+      const std::int32_t* ids = labels.empty() ? nullptr : labels.ptr<std::int32_t>(y);
+      const std::int32_t* up = ids != nullptr && y > 0 ? labels.ptr<std::int32_t>(y - 1) : nullptr;
+      const std::int32_t* down =
+          ids != nullptr && y + 1 < rows ? labels.ptr<std::int32_t>(y + 1) : nullptr;
+      const std::uint8_t* mask = edges ? edge_mask.ptr<std::uint8_t>(y) : nullptr;
+      for (int x = 0; x < cols; ++x) {
+        const int base = g[x] * (256 - weight);
+        if (ids == nullptr || ids[x] == 0) {
+          dst[x] = cv::Vec3b(g[x], g[x], g[x]);
+        } else {
+          const Rgb& c = colour_of(ids[x]);
+          dst[x] = cv::Vec3b(static_cast<std::uint8_t>((base + c.b * weight) >> 8),
+                             static_cast<std::uint8_t>((base + c.g * weight) >> 8),
+                             static_cast<std::uint8_t>((base + c.r * weight) >> 8));
+        }
+        // Edge stages mark pixels without depth as edges too; those stay black.
+        if (mask != nullptr && mask[x] != 0 && g[x] != 0) put(dst[x], style.edge_colour);
+        if (style.draw_borders && ids != nullptr && ids[x] != 0 &&
+            is_border(up, ids, down, x, cols)) {
+          put(dst[x], style.border_colour);
+        }
       }
     }
-  }
+  });
   return out;
 }
 
@@ -289,7 +292,7 @@ void OverlaySink::process(ProcessContext& ctx) {
     require_same_size(depth.depth, "depth", edges.mask, "edges");
     mask = edges.mask;
   }
-  write_png(file, render_overlay(depth.depth, ids, mask, style_));
+  write_png(file, render_overlay(depth.depth, ids, mask, style_, ctx.parallel_runner()));
 }
 
 }  // namespace facet::io

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <opencv2/core/mat.hpp>
 
+#include "facet/parallel.hpp"
 #include "facet/stage.hpp"
 #include "io/label_palette.hpp"
 
@@ -32,8 +33,9 @@ GreyRange auto_grey_range(const cv::Mat& depth);
 
 // Renders the overlay as CV_8UC3 (BGR). `depth` is CV_16UC1 mm or CV_32FC1 m; `labels` (CV_32SC1,
 // or empty for none) and `edge_mask` (CV_8UC1, 255 = edge, or empty for none) are of its size.
+// Bands of rows are drawn on `runner`'s threads when one is given.
 cv::Mat render_overlay(const cv::Mat& depth, const cv::Mat& labels, const cv::Mat& edge_mask,
-                       const OverlayStyle& style);
+                       const OverlayStyle& style, ParallelRunner* runner = nullptr);
 
 class OverlaySink final : public Stage {
  public:

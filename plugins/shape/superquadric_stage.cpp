@@ -52,6 +52,23 @@ StageSpec SuperquadricStage::spec() {
   return spec;
 }
 
+void SuperquadricStage::fit_object(ObjectGeometry& geometry) const {
+  ObjectModel& model = geometry.model;
+  model.box.residual_m = box_surface_rms_m(model.box, geometry.points_m);
+  OrientedBox initial = model.box;
+  if (geometry.support != nullptr) {
+    initial = fit_supported_box(geometry.points_m, *geometry.support);
+  } else if (extend_without_plane_) {
+    initial = extend_box_away_from_camera(model.box);
+  }
+  SuperquadricFitOptions options = fit_options_;
+  options.seed = object_seed(fit_options_.seed, model.id);
+  const Plane* contact = fit_options_.support_weight > 0.0 ? geometry.support : nullptr;
+  model.superquadric = fit_superquadric(geometry.points_m, initial, contact, options).superquadric;
+  model.grasp = grasp_rule_.classify(
+      2.0 * (model.superquadric.valid ? model.superquadric.size_m : model.box.half_extents_m));
+}
+
 SuperquadricStage::SuperquadricStage(const Params& params)
     : support_tolerance_m_(params.get_double("support_tolerance_m")),
       support_max_gap_m_(params.get_double("support_max_gap_m")),
@@ -73,31 +90,22 @@ void SuperquadricStage::process(ProcessContext& ctx) {
 
   ObjectList list;
   static_cast<FrameHeader&>(list) = static_cast<const FrameHeader&>(labels);
+  std::vector<ObjectGeometry> geometries =
+      describe_objects(labels, points, planes, support_tolerance_m_, support_max_gap_m_);
+  // Objects are fitted independently (each with its own seed), one or more per worker.
+  ctx.parallel_for(static_cast<std::int64_t>(geometries.size()), 1,
+                   [&](std::int64_t begin, std::int64_t end) {
+                     for (std::int64_t i = begin; i < end; ++i)
+                       fit_object(geometries[static_cast<std::size_t>(i)]);
+                   });
   double residual_sum_m = 0.0;
   int fitted = 0;
-  for (ObjectGeometry& geometry :
-       describe_objects(labels, points, planes, support_tolerance_m_, support_max_gap_m_)) {
-    ObjectModel& model = geometry.model;
-    model.box.residual_m = box_surface_rms_m(model.box, geometry.points_m);
-    OrientedBox initial = model.box;
-    if (geometry.support != nullptr) {
-      initial = fit_supported_box(geometry.points_m, *geometry.support);
-    } else if (extend_without_plane_) {
-      initial = extend_box_away_from_camera(model.box);
-    }
-    SuperquadricFitOptions options = fit_options_;
-    options.seed = object_seed(fit_options_.seed, model.id);
-    const Plane* contact = fit_options_.support_weight > 0.0 ? geometry.support : nullptr;
-    model.superquadric =
-        fit_superquadric(geometry.points_m, initial, contact, options).superquadric;
-    if (model.superquadric.valid) {
-      model.grasp = grasp_rule_.classify(2.0 * model.superquadric.size_m);
-      residual_sum_m += model.superquadric.residual;
+  for (ObjectGeometry& geometry : geometries) {
+    if (geometry.model.superquadric.valid) {
+      residual_sum_m += geometry.model.superquadric.residual;
       ++fitted;
-    } else {
-      model.grasp = grasp_rule_.classify(2.0 * model.box.half_extents_m);
     }
-    list.objects.push_back(std::move(model));
+    list.objects.push_back(std::move(geometry.model));
   }
   const double fit_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

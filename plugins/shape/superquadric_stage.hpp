@@ -7,6 +7,7 @@
 
 #include "facet/stage.hpp"
 #include "shape/grasp_rule.hpp"
+#include "shape/object_models.hpp"
 #include "shape/superquadric_fit.hpp"
 
 namespace facet::shape {
@@ -18,6 +19,9 @@ class SuperquadricStage final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  // Box residual, initial box, superquadric and grasp prototype of one object, in place.
+  void fit_object(ObjectGeometry& geometry) const;
+
   double support_tolerance_m_;
   double support_max_gap_m_;
   bool extend_without_plane_;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <opencv2/imgproc.hpp>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -14,6 +15,7 @@
 
 #include "facet/framework/executor.hpp"
 #include "facet/framework/registry.hpp"
+#include "facet/testing/reverse_runner.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
 #include "io/cloud_sink.hpp"
@@ -217,6 +219,24 @@ TEST(OverlaySink, AutoRangeIgnoresAFewOutliers) {
   EXPECT_NEAR(range.near_m, 1.001, 1e-9);
   EXPECT_NEAR(range.far_m, 1.198, 1e-9);
   EXPECT_EQ(facet::io::auto_grey_range(cv::Mat(3, 3, CV_16UC1, cv::Scalar(0))).far_m, 0.0);
+}
+
+TEST(OverlaySink, RowsDrawnInBandsGiveTheSamePicture) {
+  // 640 x 480 with segments and borders crossing every band boundary.
+  cv::Mat depth(480, 640, CV_16UC1);
+  cv::randu(depth, 600, 1400);
+  cv::Mat labels = cv::Mat::zeros(depth.size(), CV_32SC1);
+  for (int i = 0; i < 12; ++i)
+    cv::circle(labels, cv::Point(50 * i + 30, 40 * i + 20), 45, cv::Scalar(i + 1), -1);
+  cv::Mat edges = cv::Mat::zeros(depth.size(), CV_8UC1);
+  edges.row(100).setTo(255);
+  facet::io::OverlayStyle style;
+  style.draw_edges = true;
+  const cv::Mat whole = facet::io::render_overlay(depth, labels, edges, style);
+  facet::testing::ReverseRunner runner(4);
+  const cv::Mat banded = facet::io::render_overlay(depth, labels, edges, style, &runner);
+  EXPECT_EQ(runner.runs(), 1) << "the picture was not split";
+  EXPECT_EQ(cv::norm(whole, banded, cv::NORM_INF), 0.0);
 }
 
 TEST(OverlaySink, DrawsTheEdgeMaskWhenConnectedAndAsked) {

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <opencv2/imgproc.hpp>
 
+#include "edges/normal_edge_score.hpp"
+#include "facet/testing/reverse_runner.hpp"
 #include "facet/types/images.hpp"
 #include "reference_edges.hpp"
 #include "surface_pipeline.hpp"
@@ -173,6 +175,18 @@ TEST(NormalEdges, OptimisedStagesAgreeWithThePlainReferenceOnRealFrames) {
         EXPECT_LT(edge_px, static_cast<int>(edges.mask.total()) - 1000);
       }
     }
+  }
+}
+
+TEST(NormalEdges, BandsOfRowsScoredApartGiveTheSameImage) {
+  const RealFrame frame = load_mosd_frame(kMosd, "learn0");
+  for (const int reach : {1, 3}) {
+    edges::NormalEdgeScorer scorer(reach, edges::DirectionCombine::min);
+    const cv::Mat whole = scorer.score(frame.normals.normals);
+    facet::testing::ReverseRunner runner(4);
+    const cv::Mat banded = scorer.score(frame.normals.normals, &runner);
+    EXPECT_EQ(runner.runs(), 1) << "the image was not split";
+    EXPECT_EQ(cv::norm(whole, banded, cv::NORM_INF), 0.0) << "pixels=" << reach;
   }
 }
 
