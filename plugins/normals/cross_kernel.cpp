@@ -1,6 +1,7 @@
 #include "normals/cross_kernel.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace facet::normals {
@@ -118,10 +119,13 @@ void cross_normals_row(const cv::Mat& z, const PixelGrid& grid, const CrossOptio
 }
 
 void cross_normals(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options,
-                   cv::Mat& normals) {
+                   cv::Mat& normals, ParallelRunner* runner) {
   normals.create(z.rows, z.cols, CV_32FC3);
-  for (int y = 0; y < z.rows; ++y)
-    cross_normals_row(z, grid, options, y, normals.ptr<float>(y));
+  constexpr std::int64_t kMinBandRows = 32;
+  parallel_for(runner, z.rows, kMinBandRows, [&](std::int64_t begin, std::int64_t end) {
+    for (auto y = static_cast<int>(begin); y < static_cast<int>(end); ++y)
+      cross_normals_row(z, grid, options, y, normals.ptr<float>(y));
+  });
 }
 
 }  // namespace facet::normals

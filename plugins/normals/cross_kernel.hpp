@@ -4,6 +4,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include "facet/parallel.hpp"
 #include "normals/depth_space.hpp"
 
 namespace facet::normals {
@@ -22,9 +23,10 @@ struct CrossOptions {
 // normals: CV_32FC3 unit normals of z (CV_32FC1, NaN = invalid) in the space of `grid`, oriented
 // towards the camera (metric: n . p < 0 at the pixel's point p; image: negative third
 // component). NaN where the pixel or any neighbour used is invalid, and within r of the border.
-// `normals` is (re)allocated to z's size.
+// `normals` is (re)allocated to z's size. Bands of rows are computed on `runner`'s threads when
+// one is given (each row depends only on z).
 void cross_normals(const cv::Mat& z, const PixelGrid& grid, const CrossOptions& options,
-                   cv::Mat& normals);
+                   cv::Mat& normals, ParallelRunner* runner = nullptr);
 
 // Row y of the same (3 * z.cols floats into `out`), for consumers that work row by row and would
 // otherwise write and re-read a whole image.

@@ -75,12 +75,7 @@ void CrossStage::process(ProcessContext& ctx) {
   NormalImage output;
   static_cast<FrameHeader&>(output) = input;
   if (smooth_radius_px_ == 0) {
-    output.normals.create(z_.rows, z_.cols, CV_32FC3);
-    constexpr std::int64_t kMinBandRows = 32;
-    ctx.parallel_for(z_.rows, kMinBandRows, [&](std::int64_t begin, std::int64_t end) {
-      for (auto y = static_cast<int>(begin); y < static_cast<int>(end); ++y)
-        cross_normals_row(z_, grid_, options_, y, output.normals.ptr<float>(y));
-    });
+    cross_normals(z_, grid_, options_, output.normals, ctx.parallel_runner());
   } else {
     // Row by row: the unsmoothed normals never leave the cache as a whole image.
     smoother_.apply(

@@ -9,8 +9,8 @@ namespace facet {
 ChunkPlan::ChunkPlan(std::int64_t count, std::int64_t min_chunk, int chunks)
     : count_(std::max<std::int64_t>(count, 0)) {
   const std::int64_t by_size = count_ / std::max<std::int64_t>(min_chunk, 1);
-  chunks_ = static_cast<std::size_t>(
-      std::clamp<std::int64_t>(std::min<std::int64_t>(by_size, chunks), 1, std::max(chunks, 1)));
+  chunks_ =
+      static_cast<std::size_t>(std::max<std::int64_t>(std::min<std::int64_t>(by_size, chunks), 1));
 }
 
 std::int64_t ChunkPlan::chunk_begin(std::size_t i) const {

@@ -33,9 +33,9 @@ class ParallelRunner {
 void parallel_for(ParallelRunner* runner, std::int64_t count, std::int64_t min_chunk,
                   const std::function<void(std::int64_t begin, std::int64_t end)>& body);
 
-// Splits [0, count) into at most `chunks` contiguous ranges of at least `min_chunk` items
-// (the last range takes the rest); returns how many ranges there are. Range i is
-// [chunk_begin(i), chunk_begin(i + 1)).
+// Splits [0, count) into at most `chunks` contiguous ranges of at least `min_chunk` items (at
+// least one range; sizes differ by at most one, the larger ones first). size() is how many
+// ranges there are; range i is [chunk_begin(i), chunk_begin(i + 1)).
 struct ChunkPlan {
   ChunkPlan(std::int64_t count, std::int64_t min_chunk, int chunks);
   std::int64_t chunk_begin(std::size_t i) const;
