@@ -14,8 +14,17 @@
 namespace facet {
 
 // A plane n·x + d = 0 with unit normal n pointing towards the camera (n·x < 0 for points in front).
+// What a support plane is in the scene (docs/planes.md, "The scene model"): the table the objects
+// stand on, or structure around it that is background too.
+enum class PlaneRole : std::int32_t {
+  table,  // the support the objects stand on (at most one per frame)
+  floor,  // horizontal, below the table
+  wall,   // any other background plane: walls, a vertical face of the room
+};
+
 struct Plane {
   std::int32_t id = 0;  // 1..N, the id its pixels carry in the plane label image
+  PlaneRole role = PlaneRole::wall;
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   double offset_m = 0.0;  // d
   std::int64_t inliers = 0;
@@ -30,6 +39,17 @@ struct Plane {
 struct SupportPlanes : FrameHeader {
   std::vector<Plane> planes;
   Eigen::Vector3d up = -Eigen::Vector3d::UnitY();  // world up in the camera frame, unit length
+  std::int32_t table_id = 0;                       // id of the plane with role table, 0 = none
+  // The table's visible extent: a convex polygon of points on the table plane (camera frame,
+  // metres), counter-clockwise seen from above; empty without a table. Objects stand inside it.
+  std::vector<Eigen::Vector3d> table_outline_m;
+
+  const Plane* table() const {
+    for (const Plane& plane : planes) {
+      if (plane.id == table_id) return &plane;
+    }
+    return nullptr;
+  }
 };
 
 // An oriented box: pose maps box coordinates to the camera frame; the box spans ±half_extents_m.
