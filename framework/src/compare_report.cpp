@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "facet/framework/json_writer.hpp"
+#include "sweep_report.hpp"
 
 namespace facet {
 namespace {
@@ -52,6 +53,10 @@ void write_compare_table(std::ostream& out, const CompareSummary& summary) {
     for (const auto& metric : variant.metrics)
       label_width = std::max(label_width, metric.node.size() + metric.name.size() + 3);
   }
+  if (summary.sweep) {
+    for (const auto& axis : summary.sweep->axes)
+      label_width = std::max(label_width, axis.key().size() + 2);
+  }
   std::size_t column = 10;
   for (const auto& variant : summary.variants)
     column = std::max(column, variant.name.size() + 1);
@@ -68,6 +73,18 @@ void write_compare_table(std::ostream& out, const CompareSummary& summary) {
       out << fmt::format(" {:>{}}", cell(variant), column);
     out << '\n';
   };
+  if (summary.sweep) {
+    // The swept values first: the column names repeat them, but a row reads along the sweep.
+    const SweepSummary& sweep = *summary.sweep;
+    for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
+      std::size_t v = 0;
+      print_row(sweep.axes[a].key(), [&](const VariantSummary&) {
+        const std::size_t point = v++;
+        return point < sweep.points.size() ? sweep.axes[a].texts[sweep.points[point].index[a]]
+                                           : std::string("-");
+      });
+    }
+  }
   print_row("frame median ms",
             [](const VariantSummary& v) { return fmt::format("{:.2f}", v.median_ms); });
   print_row("frame p95 ms",
@@ -99,6 +116,7 @@ void write_compare_table(std::ostream& out, const CompareSummary& summary) {
       return std::string("-");
     });
   }
+  if (summary.sweep) detail::write_sweep_findings(out, *summary.sweep);
 }
 
 void write_compare_json(std::ostream& out, const CompareSummary& summary) {
@@ -107,10 +125,19 @@ void write_compare_json(std::ostream& out, const CompareSummary& summary) {
   json.key("graph").value(summary.graph);
   json.key("frames").value(summary.frames);
   json.key("warmup").value(summary.warmup);
+  if (summary.sweep) {
+    json.key("sweep");
+    detail::write_sweep_json(json, *summary.sweep);
+  }
   json.key("variants").begin_array();
-  for (const auto& variant : summary.variants) {
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    const VariantSummary& variant = summary.variants[v];
     json.begin_object();
     json.key("name").value(variant.name);
+    if (summary.sweep && v < summary.sweep->points.size()) {
+      json.key("sweep");
+      detail::write_sweep_point_json(json, *summary.sweep, v);
+    }
     json.key("median_ms").value(variant.median_ms);
     json.key("p95_ms").value(variant.p95_ms);
     json.key("frame_ms").begin_array();
@@ -152,20 +179,38 @@ void write_compare_json(std::ostream& out, const CompareSummary& summary) {
 }
 
 void write_compare_csv(std::ostream& out, const CompareSummary& summary) {
-  out << "variant,kind,node,stage,name,shared,count,median,p95,mean\n";
-  for (const auto& variant : summary.variants) {
+  // A sweep's values go in columns after the usual ones, so that readers of the plain layout
+  // find every column where it was.
+  std::string header = "variant,kind,node,stage,name,shared,count,median,p95,mean";
+  if (summary.sweep) {
+    for (const auto& axis : summary.sweep->axes) {
+      header += ',';
+      header += csv_field(axis.key());
+    }
+  }
+  out << header << '\n';
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    const VariantSummary& variant = summary.variants[v];
+    std::string swept;
+    if (summary.sweep) {
+      const SweepSummary& sweep = *summary.sweep;
+      for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
+        swept += ',';
+        if (v < sweep.points.size()) swept += sweep.axes[a].texts[sweep.points[v].index[a]];
+      }
+    }
     const std::string name = csv_field(variant.name);
-    out << fmt::format("{},total,,,frame_ms,,{},{},{},\n", name, variant.frame_ms.size(),
-                       number(variant.median_ms), number(variant.p95_ms));
+    out << fmt::format("{},total,,,frame_ms,,{},{},{},{}\n", name, variant.frame_ms.size(),
+                       number(variant.median_ms), number(variant.p95_ms), swept);
     for (const auto& stage : variant.stages) {
-      out << fmt::format("{},stage,{},{},call_ms,{},{},{},{},\n", name, csv_field(stage.node),
+      out << fmt::format("{},stage,{},{},call_ms,{},{},{},{},{}\n", name, csv_field(stage.node),
                          csv_field(stage.stage), stage.shared ? "yes" : "no", stage.calls,
-                         number(stage.median_ms), number(stage.p95_ms));
+                         number(stage.median_ms), number(stage.p95_ms), swept);
     }
     for (const auto& metric : variant.metrics) {
-      out << fmt::format("{},metric,{},,{},,{},{},,{}\n", name, csv_field(metric.node),
+      out << fmt::format("{},metric,{},,{},,{},{},,{}{}\n", name, csv_field(metric.node),
                          csv_field(metric.name), metric.count, number(metric.median),
-                         number(metric.mean));
+                         number(metric.mean), swept);
     }
   }
 }

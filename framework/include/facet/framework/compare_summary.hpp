@@ -5,11 +5,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_merge.hpp"
+#include "facet/framework/sweep_summary.hpp"
 #include "facet/framework/validated_graph.hpp"
 
 namespace facet {
@@ -56,6 +58,8 @@ struct CompareSummary {
   std::int64_t frames = 0;  // frames run
   std::int64_t warmup = 0;  // leading frames left out of the timing
   std::vector<VariantSummary> variants;
+  // Set when the variants are the points of a parameter sweep (one per point, in its order).
+  std::optional<SweepSummary> sweep;
 };
 
 // `stats` must come from running `graph`, validated from `merged.spec`, with
