@@ -80,6 +80,16 @@ void write_sweep_findings(std::ostream& out, const SweepSummary& sweep) {
   for (const auto& plateau : sweep.plateaus) {
     out << fmt::format("\nplateau of {} (within {} of its best {:.4g}): {}\n", plateau.score,
                        plateau.within, plateau.best, range_text(sweep, plateau));
+    // A plateau cut by the end of the range may go on beyond it: the sweep cannot tell.
+    const SweepAxis& axis = sweep.axes[plateau.axis];
+    const bool at_start = sweep.points[plateau.first].index[plateau.axis] == 0;
+    const bool at_stop = sweep.points[plateau.last].index[plateau.axis] + 1 == axis.values.size();
+    if (at_start || at_stop) {
+      out << fmt::format("  it reaches the {} of the sweep and may extend beyond it\n",
+                         at_start && at_stop ? "start and the stop"
+                         : at_start          ? "start"
+                                             : "stop");
+    }
   }
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "facet/framework/compare_summary.hpp"
 
@@ -11,6 +12,8 @@ namespace facet {
 namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+// Stages whose metrics are scores: eval.groundtruth, eval.stability, ...
+constexpr const char* kEvalFamily = "eval.";
 // F values such as 0.97 and 0.96 differ by a hair less than 0.01 in binary: such a pair counts
 // as within the tolerance, as it does in decimal.
 constexpr double kTolerance = 1e-9;
@@ -140,9 +143,19 @@ SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxi
   sweep.within = within;
   const std::size_t count = std::min(sweep.points.size(), summary.variants.size());
 
-  // Every metric any point reported, first seen first; the mean over frames at each point.
+  // The scores are what the eval stages report; the other stages' metrics (valid pixels, patch
+  // counts, ...) describe the work, not its quality. A graph without an eval stage has only those,
+  // so then they are all plotted.
+  std::set<std::string> eval_nodes;
+  for (std::size_t p = 0; p < count; ++p) {
+    for (const auto& stage : summary.variants[p].stages) {
+      if (stage.stage.starts_with(kEvalFamily)) eval_nodes.insert(stage.node);
+    }
+  }
+  // Every such metric any point reported, first seen first; the mean over frames at each point.
   for (std::size_t p = 0; p < count; ++p) {
     for (const auto& metric : summary.variants[p].metrics) {
+      if (!eval_nodes.empty() && eval_nodes.count(metric.node) == 0) continue;
       const std::string key = metric.node + "." + metric.name;
       if (sweep.find_score(key) != nullptr) continue;
       SweepScore score{key, key, metric.name, goal_of_metric(metric.name), {}, {}};

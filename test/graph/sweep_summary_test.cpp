@@ -273,6 +273,26 @@ TEST(SweepGridSummary, MissingScoresAreGapsNotZeros) {
   }
 }
 
+TEST(SweepGridSummary, ScoresAreTheEvalStagesMetricsWhenThereAreAny) {
+  const std::vector<SweepAxis> axes = {axis_of("a.x=1:2:1")};
+  const auto points = expand_sweep_grid(axes);
+  CompareSummary summary = comparison(points, {0.5, 0.6});
+  for (auto& variant : summary.variants) {
+    variant.stages.push_back({"patches", "patches", "grow.surfaces"});
+    variant.stages.push_back({"score", "score@x", "eval.groundtruth"});
+    variant.metrics.push_back({"patches", "patches", 4, 12.0, 12.0, 12.0, 12.0});
+  }
+  const SweepSummary sweep = summarize_sweep(summary, axes, points, "", 0.01);
+  EXPECT_EQ(sweep.find_score("patches.patches"), nullptr);
+  EXPECT_NE(sweep.find_score("score.f"), nullptr);
+  EXPECT_NE(sweep.find_score("frame_ms"), nullptr);
+  // Without an eval stage, every metric is a score.
+  for (auto& variant : summary.variants)
+    variant.stages.pop_back();
+  const SweepSummary plain = summarize_sweep(summary, axes, points, "", 0.01);
+  EXPECT_NE(plain.find_score("patches.patches"), nullptr);
+}
+
 TEST(WidestRun, KnownValues) {
   const std::vector<double> x = {0, 1, 2, 3, 4, 5, 6};
   EXPECT_FALSE(widest_run_at_least(x, {0, 0, 0, 0, 0, 0, 0}, 1.0).has_value());

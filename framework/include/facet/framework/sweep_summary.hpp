@@ -61,7 +61,8 @@ struct SweepSummary {
 // The metric whose plateau is reported: eval.groundtruth's F-measure.
 inline constexpr const char* kHeadlineMetric = "f";
 
-// `summary` is the comparison of `points` (one variant per point, in that order).
+// `summary` is the comparison of `points` (one variant per point, in that order). The scores are
+// the metrics of the eval.* stages (every metric when the graph has none), then the frame time.
 SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxis> axes,
                              std::vector<SweepPoint> points, std::string variant, double within);
 
