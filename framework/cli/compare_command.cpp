@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "compare_html.hpp"
+#include "compare_sweep.hpp"
 #include "exit_codes.hpp"
 #include "facet/framework/compare_report.hpp"
 #include "facet/framework/compare_summary.hpp"
@@ -31,6 +32,9 @@ struct CompareArgs {
   PluginOptions plugins;
   fs::path graph_file;
   std::string variants;
+  std::vector<std::string> sweeps;  // node.param=start:stop:step
+  std::string variant;              // the variant a sweep starts from
+  double plateau_within = 0.01;
   std::vector<std::string> params;
   std::vector<std::string> sets;
   std::int64_t frames = -1;
@@ -118,8 +122,47 @@ int compare(const CompareArgs& args) {
     diagnostics.print(std::cerr);
     return kInvalidGraph;
   }
+  const Registry registry = load_registry(args.plugins, base.plugin_paths);
+
+  // What to compare: named variants, or the points of a sweep (each one the graph with
+  // --variant, --set and the point's values applied, in that order).
+  struct Request {
+    std::string name;
+    std::string file_variant;  // applied from the graph file; empty for none
+    std::vector<std::pair<std::string, std::string>> sets;
+  };
+  std::vector<Request> requests;
+  PreparedSweep sweep;
+  if (!args.sweeps.empty()) {
+    if (!args.variants.empty()) {
+      std::cerr << "error: --sweep compares the points of one sweep; give --variant V to sweep "
+                   "on top of variant V instead of --variants\n";
+      return kUsage;
+    }
+    sweep = prepare_sweep(args.sweeps, args.graph_file, base_options, args.variant, registry);
+    if (sweep.exit_code != kOk) return sweep.exit_code;
+    for (const auto& point : sweep.points)
+      requests.push_back({point.name, args.variant, point.sets});
+  } else if (!args.variant.empty()) {
+    std::cerr << "error: --variant " << args.variant
+              << " selects where a --sweep starts; to compare variants, list them with "
+                 "--variants\n";
+    return kUsage;
+  }
   std::vector<std::string> names =
       args.variants.empty() ? base.variants : split_list(args.variants);
+  if (!requests.empty()) {
+    names.clear();
+    for (const auto& request : requests)
+      names.push_back(request.name);
+  } else {
+    for (const auto& name : names) {
+      const bool is_base =
+          name == kBaseVariant &&
+          std::find(base.variants.begin(), base.variants.end(), name) == base.variants.end();
+      requests.push_back({name, is_base ? "" : name, {}});
+    }
+  }
   if (names.empty()) {
     std::cerr << "error: " << args.graph_file.string()
               << " defines no variants; name what to compare with --variants (e.g. "
@@ -128,15 +171,13 @@ int compare(const CompareArgs& args) {
   }
   const fs::path out_dir =
       args.out_dir.empty() ? fs::path("out/compare") / base.name : args.out_dir;
-  const Registry registry = load_registry(args.plugins, base.plugin_paths);
 
   std::vector<VariantGraph> variants;
-  for (const auto& name : names) {
-    const bool is_base =
-        name == kBaseVariant &&
-        std::find(base.variants.begin(), base.variants.end(), name) == base.variants.end();
+  for (const auto& request : requests) {
+    const std::string& name = request.name;
     LoadOptions options = base_options;
-    options.variant = is_base ? "" : name;
+    options.variant = request.file_variant;
+    options.sets.insert(options.sets.end(), request.sets.begin(), request.sets.end());
     const fs::path variant_dir = out_dir / name;
     if (base.params.count(kOutputParam) > 0) {
       options.params[kOutputParam] = variant_dir.generic_string();
@@ -188,7 +229,11 @@ int compare(const CompareArgs& args) {
         stats.frames, args.warmup);
   }
 
-  const CompareSummary summary = summarize_comparison(merged, graph, stats, args.warmup);
+  CompareSummary summary = summarize_comparison(merged, graph, stats, args.warmup);
+  if (!sweep.points.empty()) {
+    summary.sweep =
+        summarize_sweep(summary, sweep.axes, sweep.points, args.variant, args.plateau_within);
+  }
   write_compare_table(std::cout, summary);
 
   std::error_code error;
@@ -201,19 +246,28 @@ int compare(const CompareArgs& args) {
   for (const auto& name : names)
     variant_dirs.emplace_back(name, out_dir / name);
   const auto images = collect_variant_images(variant_dirs, args.images, args.image_width);
+  std::vector<SweepPlotFile> plots;
+  if (summary.sweep) {
+    auto written_plots = write_sweep_plots(out_dir, *summary.sweep);
+    if (!written_plots) return kRuntimeFailure;
+    plots = std::move(*written_plots);
+  }
   const bool written = write_file(out_dir / "compare.json",
                                   [&](std::ostream& out) { write_compare_json(out, summary); }) &&
                        write_file(out_dir / "compare.csv",
                                   [&](std::ostream& out) { write_compare_csv(out, summary); }) &&
                        write_file(out_dir / "report.html", [&](std::ostream& out) {
-                         write_compare_html(out, summary, images);
+                         write_compare_html(out, summary, images, plots);
                        });
   if (!written) return kRuntimeFailure;
   if (!args.quiet) {
+    std::string plot_names;
+    for (const auto& plot : plots)
+      plot_names += fmt::format(", {}", plot.name);
     std::cerr << fmt::format(
-        "\nwrote {0}/compare.json, compare.csv and report.html; each "
+        "\nwrote {0}/compare.json, compare.csv{1} and report.html; each "
         "variant's own outputs are in {0}/<variant>/\n",
-        out_dir.generic_string());
+        out_dir.generic_string(), plot_names);
   }
   return kOk;
 }
@@ -231,6 +285,21 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   command->add_option("--variants", args->variants,
                       "Variants to compare, comma-separated ('base' = the graph without a "
                       "variant); default: every variant of the file");
+  command->add_option("--sweep", args->sweeps,
+                      "Compare the points of a parameter sweep instead of variants: "
+                      "node.param=start:stop:step (values start + i*step up to stop; repeatable: "
+                      "a grid over every combination, at most 200 points). Each point is a "
+                      "variant named node.param=value; OUT/sweep_<node.param>.svg plots every "
+                      "score against each parameter");
+  command->add_option("--variant", args->variant,
+                      "With --sweep: the graph file's variant the sweep starts from (default: "
+                      "the graph as written)");
+  command
+      ->add_option("--plateau-within", args->plateau_within,
+                   "With --sweep: the plateau of F is the widest range of a parameter over which "
+                   "F stays within this much of its best")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command->add_option("--frames,-n", args->frames, "Stop after N frames")
       ->check(CLI::NonNegativeNumber);
   command->add_option("--warmup", args->warmup, "Leading frames left out of the timing")

@@ -190,13 +190,23 @@ std::vector<Bar> score_bars(const CompareSummary& summary) {
 
 void write_summary_table(std::ostream& out, const CompareSummary& summary) {
   const bool scored = !score_bars(summary).empty();
-  out << "<table id=\"summary\"><tr><th>variant</th><th>frame median ms</th><th>frame p95 "
-         "ms</th>";
+  const SweepSummary* sweep = summary.sweep ? &*summary.sweep : nullptr;
+  out << "<table id=\"summary\"><tr><th>variant</th>";
+  if (sweep != nullptr) {
+    for (const auto& axis : sweep->axes)
+      out << "<th>" << escape(axis.key()) << "</th>";
+  }
+  out << "<th>frame median ms</th><th>frame p95 ms</th>";
   if (scored) out << "<th>F</th><th>precision</th><th>recall</th><th>objects F&ge;0.75</th>";
   out << "</tr>\n";
-  for (const auto& variant : summary.variants) {
-    out << fmt::format("<tr><td>{}</td><td>{:.2f}</td><td>{:.2f}</td>", escape(variant.name),
-                       variant.median_ms, variant.p95_ms);
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    const VariantSummary& variant = summary.variants[v];
+    out << "<tr><td>" << escape(variant.name) << "</td>";
+    if (sweep != nullptr && v < sweep->points.size()) {
+      for (std::size_t a = 0; a < sweep->axes.size(); ++a)
+        out << "<td>" << escape(sweep->axes[a].texts[sweep->points[v].index[a]]) << "</td>";
+    }
+    out << fmt::format("<td>{:.2f}</td><td>{:.2f}</td>", variant.median_ms, variant.p95_ms);
     if (scored) {
       for (const char* name : {"f", "precision", "recall", "objects_f75_ratio"}) {
         const MetricSummary* metric = variant.find_metric(name);
@@ -236,6 +246,34 @@ void write_variant_tables(std::ostream& out, const CompareSummary& summary) {
   }
 }
 
+// The sweep's findings (best point of each score, plateau of F) and its plots.
+void write_sweep(std::ostream& out, const SweepSummary& sweep,
+                 const std::vector<SweepPlotFile>& plots) {
+  out << "<h2>Sweep</h2>\n<table id=\"sweep-best\"><tr><th>score</th><th>best</th><th>at</th>"
+         "</tr>\n";
+  for (const auto& score : sweep.scores) {
+    if (!score.best) continue;
+    out << fmt::format("<tr><td>{}</td><td>{:.4g}</td><td>{}</td></tr>\n", escape(score.label),
+                       score.values[*score.best], escape(sweep.points[*score.best].name));
+  }
+  out << "</table>\n";
+  for (const auto& plateau : sweep.plateaus) {
+    const SweepAxis& axis = sweep.axes[plateau.axis];
+    std::string fixed;
+    for (const auto& [key, text] : plateau.fixed)
+      fixed += fmt::format(", {}={}", key, text);
+    out << fmt::format(
+        "<p class=\"plateau\">Plateau of {} along {}: {} .. {} ({} point(s){}), where it stays "
+        "within {} of its best {:.4g}.</p>\n",
+        escape(plateau.score), escape(axis.key()),
+        escape(axis.texts[sweep.points[plateau.first].index[plateau.axis]]),
+        escape(axis.texts[sweep.points[plateau.last].index[plateau.axis]]), plateau.points,
+        escape(fixed), plateau.within, plateau.best);
+  }
+  for (const auto& plot : plots)
+    out << "<h3>" << escape(plot.name) << "</h3>\n" << plot.svg;
+}
+
 void write_images(std::ostream& out, const CompareSummary& summary,
                   const std::vector<ImageRow>& images) {
   if (images.empty()) return;
@@ -269,7 +307,8 @@ void write_images(std::ostream& out, const CompareSummary& summary,
 }  // namespace
 
 void write_compare_html(std::ostream& out, const CompareSummary& summary,
-                        const std::vector<ImageRow>& images) {
+                        const std::vector<ImageRow>& images,
+                        const std::vector<SweepPlotFile>& plots) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>facet compare: "
       << escape(summary.graph) << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";
   out << "<h1>facet compare: " << escape(summary.graph) << "</h1>\n";
@@ -281,6 +320,7 @@ void write_compare_html(std::ostream& out, const CompareSummary& summary,
       summary.variants.size(), summary.frames, summary.warmup);
   out << "<h2>Summary</h2>\n";
   write_summary_table(out, summary);
+  if (summary.sweep) write_sweep(out, *summary.sweep, plots);
   out << "<h2>Plots</h2>\n";
   write_bar_chart(out, "Stage median time per frame", "ms", stage_bars(summary), summary);
   write_frame_chart(out, summary);
@@ -289,10 +329,14 @@ void write_compare_html(std::ostream& out, const CompareSummary& summary,
   out << "<h2>Per variant</h2>\n";
   write_variant_tables(out, summary);
   write_images(out, summary, images);
-  // Counts the images that decoded, for a check in a headless browser; the page needs no script.
+  // Counts the images that decoded and the sweep lines the browser laid out (as SVG, with a
+  // size), for a check in a headless browser; the page needs no script.
   out << "<script>window.addEventListener('load',function(){var n=0;"
          "document.querySelectorAll('img').forEach(function(i){if(i.naturalWidth>0)n++;});"
-         "document.body.setAttribute('data-images-loaded',String(n));});</script>\n";
+         "document.body.setAttribute('data-images-loaded',String(n));var s=0;"
+         "document.querySelectorAll('svg.sweep polyline.line').forEach(function(l){"
+         "if(l.getBBox&&l.getBBox().width>0)s++;});"
+         "document.body.setAttribute('data-sweep-lines',String(s));});</script>\n";
   out << "</body></html>\n";
 }
 
