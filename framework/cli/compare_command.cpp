@@ -290,7 +290,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
                       "node.param=start:stop:step (values start + i*step up to stop; repeatable: "
                       "a grid over every combination, at most 200 points). Each point is a "
                       "variant named node.param=value; OUT/sweep_<node.param>.svg plots every "
-                      "score against each parameter");
+                      "score against each parameter. A bad sweep (range, step, unknown or "
+                      "non-numeric parameter, value out of range) exits 2. Example: --sweep "
+                      "edges.threshold=0.80:0.90:0.01");
   command->add_option("--variant", args->variant,
                       "With --sweep: the graph file's variant the sweep starts from (default: "
                       "the graph as written)");
