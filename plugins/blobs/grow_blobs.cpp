@@ -24,10 +24,15 @@ StageSpec GrowBlobs::spec() {
              "input, blobs with more than max_behind_fraction of their points over "
              "behind_margin_m behind a support plane (background seen beyond a table or "
              "through a wall opening; when front_only is set) or more than "
-             "max_on_plane_fraction within on_plane_distance_m of one (a shred of the plane) "
-             "are removed too, and with a workspace box those whose centroid lies outside it. Ids "
-             "1..N follow the raster order "
-             "of each blob's first pixel.")
+             "max_on_plane_fraction within on_plane_distance_m of one (a shred of the plane; "
+             "points above a horizontal plane by more than min_rise_m are not on it: a book's "
+             "top) are removed too. When the planes name a table (on_table): blobs that do not "
+             "stand on it, with fewer than min_raised_fraction of their points min_rise_m above "
+             "it (the table's front edge, its underside, the floor) or more than "
+             "max_outside_fraction of their footprint outside the table's outline grown by "
+             "table_margin_m (a chair, a wall's shreds beyond the table). With a workspace box, "
+             "blobs whose centroid lies outside it. Ids 1..N follow the raster order of each "
+             "blob's first pixel.")
       .input<LabelImage>("patches",
                          "Patches left for objects (planes.support `patches`); 0 = not an "
                          "object candidate.")
@@ -74,6 +79,27 @@ StageSpec GrowBlobs::spec() {
       .param("on_plane_distance_m", 0.012,
              "max_on_plane_fraction: how close to a plane a point counts as on it.",
              {.unit = "m", .min = 0.0, .max = 1.0, .origin = "planes.support distance_m (delta)"})
+      .param("on_table", true,
+             "Scene model (docs/planes.md): when the planes name a table, objects stand on it: "
+             "a blob must rise above the table and stand inside its outline.",
+             {.origin = "docs/planes.md: the table, the structure around it, the objects"})
+      .param("min_rise_m", 0.006,
+             "on_table and the plane band: a point more than this above the table (or another "
+             "horizontal support) rises above it.",
+             {.unit = "m", .min = 0.0, .max = 0.5, .origin = "planes.support min_object_height_m"})
+      .param("min_raised_fraction", 0.5,
+             "on_table: a blob with fewer than this share of its points above min_rise_m is "
+             "not an object on the table (the table's front edge or underside, a shred of its "
+             "top).",
+             {.min = 0.0, .max = 1.0, .origin = "majority; measured on generated scenes"})
+      .param("table_margin_m", 0.03,
+             "on_table: the table's outline is grown by this much before a footprint is tested "
+             "(objects at the table's visible border, the outline's sampling).",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on generated scenes"})
+      .param("max_outside_fraction", 0.5,
+             "on_table: a blob with more than this share of its footprint (its points projected "
+             "onto the table plane) outside the grown outline stands beyond the table.",
+             {.min = 0.0, .max = 1.0, .origin = "majority"})
       .param("edge_pixels", true,
              "With the plane_labels input: valid pixels that are in no patch and on no plane "
              "(normal-edge pixels the patches did not absorb: silhouettes, creases, small "
@@ -103,6 +129,11 @@ GrowBlobs::GrowBlobs(const Params& params)
   rule_.behind_margin_m = static_cast<float>(params.get_double("behind_margin_m"));
   rule_.max_on_plane_fraction = params.get_double("max_on_plane_fraction");
   rule_.on_plane_distance_m = static_cast<float>(params.get_double("on_plane_distance_m"));
+  rule_.on_table = params.get_bool("on_table");
+  rule_.min_rise_m = static_cast<float>(params.get_double("min_rise_m"));
+  rule_.min_raised_fraction = params.get_double("min_raised_fraction");
+  rule_.table_margin_m = static_cast<float>(params.get_double("table_margin_m"));
+  rule_.max_outside_fraction = params.get_double("max_outside_fraction");
   try {
     workspace_ = parse_workspace(params.get_string("workspace"));
   } catch (const std::invalid_argument& error) {
@@ -171,6 +202,8 @@ void GrowBlobs::process(ProcessContext& ctx) {
   ctx.metric("blobs", blobs.count);
   ctx.metric("blobs_behind_planes", dropped.behind);
   ctx.metric("blobs_on_planes", dropped.on_plane);
+  ctx.metric("blobs_not_raised", dropped.not_raised);
+  ctx.metric("blobs_outside_table", dropped.outside_table);
   ctx.metric("blobs_outside_workspace", outside);
   if (plane_labels != nullptr) {
     ctx.metric("edge_px_attached", static_cast<double>(attachment.attached_px));

@@ -11,6 +11,8 @@
 #include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
+#include "planes/scene_model.hpp"
+#include "planes/table_outline.hpp"
 #include "planes/world_up.hpp"
 
 namespace facet::planes {
@@ -21,6 +23,15 @@ struct Candidate {
   std::int64_t size_px = 0;
   std::vector<float> points;  // x, y, z of each valid pixel of the patch
   PlaneModel model;
+
+  Eigen::Vector3f centroid_m() const {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i + 2 < points.size(); i += 3)
+      sum += Eigen::Vector3d(points[i], points[i + 1], points[i + 2]);
+    const auto count = static_cast<double>(points.size() / 3);
+    if (count == 0) return Eigen::Vector3f::Zero();
+    return (sum / count).cast<float>();
+  }
 };
 
 // Large patches, largest first (ties: lower id first), with at most max_points of their points
@@ -80,6 +91,23 @@ std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& 
   return candidates;
 }
 
+// The table's outline is the hull of the points on every 8th row and column: a few thousand of
+// them, whose hull is within a few millimetres of the full one.
+constexpr int kOutlineStridePx = 8;
+
+// The valid pixels of the frame, counted on every 4th row (the level sizes they are compared
+// with are coarse shares of the view).
+std::int64_t estimate_valid_px(const cv::Mat& xyz) {
+  constexpr int kRowStep = 4;
+  std::int64_t valid = 0;
+  for (int row = 0; row < xyz.rows; row += kRowStep) {
+    const auto* p = xyz.ptr<float>(row);
+    for (int col = 0; col < xyz.cols; ++col)
+      valid += std::isfinite(p[3 * col + 2]) ? 1 : 0;
+  }
+  return valid * kRowStep;
+}
+
 }  // namespace
 
 StageSpec SupportPlaneStage::spec() {
@@ -89,20 +117,29 @@ StageSpec SupportPlaneStage::spec() {
              "Paper sec. II-B d. Every patch of at least candidate_min_px valid points is a "
              "candidate (largest first, at most max_candidates): a plane is fitted to it by "
              "ransac_iterations random point triples of the patch, scored at distance_m / 2, "
-             "then refitted by least squares. A candidate becomes a support plane when it is "
-             "the dominant horizontal plane (the largest candidate facing world up), or when "
-             "it covers at least min_view_fraction of the valid pixels and at most "
+             "then refitted by least squares. The scene model (docs/planes.md) first picks the "
+             "table: horizontal candidates are grouped into levels (centroids within "
+             "min_object_height_m of one plane); the largest level is the table, unless a level "
+             "far above it (max_object_height_m) holds large_view_fraction of the view (a table "
+             "above the floor) or a level a little below it holds min_table_fraction (the "
+             "largest level is then a board or box lying on that table). Levels raised above "
+             "the table by up to max_object_height_m are object tops (books, trays, boxes lying "
+             "flat) and never support planes. Any other candidate becomes a background plane "
+             "when it covers at least min_view_fraction of the valid pixels and at most "
              "max_behind_fraction of the object candidates (points on no support plane) lie "
              "more than behind_margin_m behind it; this is re-evaluated until nothing changes, "
              "so a table is accepted once the floor and walls behind it are. Box faces fail: "
              "the rest of their box lies behind them. Then, largest first, every valid point "
              "not yet taken within distance_m of a support plane joins it, also out of its "
-             "patch. Patches left with fewer than min_segment_px points are dropped.")
+             "patch, except the points of object faces. Patches left with fewer than "
+             "min_segment_px points are dropped. The table's visible extent (a convex outline) "
+             "goes with the planes, for grow.blobs.")
       .input<LabelImage>("patches", "Surface patches, CV_32SC1 ids 1..count (grow.surfaces).")
       .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
       .output<SupportPlanes>("planes",
                              "Support planes (ids 1..N, largest candidate first; normal towards "
-                             "the camera, inliers, rms, horizontal) and world up.")
+                             "the camera, inliers, rms, horizontal, role: table, floor or wall), "
+                             "world up, the table's id and its outline.")
       .output<LabelImage>("plane_labels", "CV_32SC1 plane id per pixel, 0 = on no plane.")
       .output<LabelImage>("patches",
                           "The input patches with plane points and dropped segments set to 0; "
@@ -139,9 +176,10 @@ StageSpec SupportPlaneStage::spec() {
       .param("object_face_off_plane_fraction", 0.5,
              "A patch with at least this share of its points more than 2 distance_m from every "
              "support plane is an object face: its points within distance_m of a plane stay "
-             "with it (the bottom band of an object standing on the table). Other points within "
-             "distance_m join the plane. Above 1, every point within distance_m joins, as in the "
-             "paper.",
+             "with it (the bottom band of an object standing on the table). So is a patch whose "
+             "points near a horizontal plane lie on average more than min_object_height_m above "
+             "it (a book 1 cm thick). Other points within distance_m join the plane. Above 1, "
+             "only the height test keeps points from the planes.",
              {.min = 0.0,
               .max = 2.0,
               .origin = "measured on mOSD: recall of objects' lower borders (docs/planes.md)"})
@@ -186,6 +224,31 @@ StageSpec SupportPlaneStage::spec() {
               .max = 16.0,
               .origin = "measured: the same decisions at 1, 2 and 4 on mOSD and the uncropped "
                         "OSD frame; 4 reads 1/16 of the points"})
+      .param("min_object_height_m", 0.006,
+             "Scene model: horizontal candidates whose centroids lie within this height of one "
+             "another's plane are one level (the fragments of one table top); a level or a patch "
+             "raised above the table by more is the top of an object lying on it. The smallest "
+             "thickness of a flat object that is found (with Kinect noise at 1 m: about 1 cm).",
+             {.unit = "m",
+              .min = 0.0,
+              .max = 0.1,
+              .origin = "measured: plateau of generated scenes with books 1-4 cm thick "
+                        "(docs/evaluation.md)"})
+      .param("max_object_height_m", 0.3,
+             "Scene model: a horizontal level raised above the table by up to this much is an "
+             "object top; farther above, and holding large_view_fraction of the view, it is a "
+             "table above the floor. A level this much or less below the largest one, holding "
+             "min_table_fraction, is the table that level stands on.",
+             {.unit = "m",
+              .min = 0.0,
+              .max = 10.0,
+              .origin = "tables stand 0.4 m and more above the floor; objects for a gripper are "
+                        "lower"})
+      .param("min_table_fraction", 0.05,
+             "Scene model: the least share of the valid pixels that a level below the largest "
+             "one needs to be taken for the table (the largest level is then a board lying on "
+             "it).",
+             {.min = 0.0, .max = 1.0, .origin = "measured on generated crowded tables"})
       .param("horizontal_max_deg", 10.0,
              "alpha_z: a plane is horizontal when its normal is within this angle of world up.",
              {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "paper (10 deg)"})
@@ -212,6 +275,7 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
       max_candidates_(static_cast<int>(params.get_int("max_candidates"))),
       max_fit_points_(params.get_int("fit_max_points")),
       object_face_off_plane_fraction_(params.get_double("object_face_off_plane_fraction")),
+      min_object_height_m_(static_cast<float>(params.get_double("min_object_height_m"))),
       horizontal_max_deg_(params.get_double("horizontal_max_deg")),
       up_prior_max_deg_(params.get_double("up_prior_max_deg")),
       min_segment_px_(params.get_int("min_segment_px")),
@@ -228,6 +292,11 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
   support_rule_.large_view_fraction = params.get_double("large_view_fraction");
   support_rule_.min_cos_horizontal = std::cos(horizontal_max_deg_ * std::numbers::pi / 180.0);
   support_rule_.sample_stride_px = static_cast<int>(params.get_int("sample_stride_px"));
+  table_rule_.min_cos_horizontal = support_rule_.min_cos_horizontal;
+  table_rule_.level_tolerance_m = static_cast<float>(params.get_double("min_object_height_m"));
+  table_rule_.max_object_height_m = static_cast<float>(params.get_double("max_object_height_m"));
+  table_rule_.min_table_fraction = params.get_double("min_table_fraction");
+  table_rule_.large_view_fraction = support_rule_.large_view_fraction;
   try {
     up_ = parse_up(params.get_string("up"));
   } catch (const std::invalid_argument& error) {
@@ -251,10 +320,12 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
       labels, xyz, patches.count, candidate_min_px_, max_candidates_, max_fit_points_);
   std::vector<PlaneModel> models;
   std::vector<std::int64_t> sizes;
+  std::vector<Eigen::Vector3f> centroids;
   for (auto& candidate : candidates) {
     if (auto model = fit_plane(candidate.points, fit_rule_, rng)) {
       models.push_back(*model);
       sizes.push_back(candidate.size_px);
+      centroids.push_back(candidate.centroid_m());
     }
   }
 
@@ -263,16 +334,32 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
                            : dominant_horizontal(models, camera_up, up_prior_max_deg_);
   Eigen::Vector3f up = up_.value_or(camera_up);
   if (!up_ && dominant >= 0) up = models[dominant].normal;
+  const TableChoice table =
+      dominant >= 0
+          ? choose_table(models, centroids, sizes, estimate_valid_px(xyz), up, table_rule_)
+          : TableChoice{-1, std::vector<CandidateRole>(models.size()), {}};
   const std::vector<CandidateEvidence> evidence =
-      decide_support(xyz, models, dominant, up, support_rule_);
+      decide_support(xyz, models, table.table, table.roles, up, support_rule_);
 
   // Assignment, largest plane first: a valid point within delta of a support plane joins the
   // first such plane in candidate order (what taking the planes one after the other would
   // give), unless it belongs to an object face, a patch that lies mostly well off the planes:
   // the bottom band of a box side, within delta of the table it stands on, stays with the box.
   std::vector<PlaneModel> accepted;
+  std::vector<PlaneRole> roles;
+  std::int32_t table_id = 0;
   for (std::size_t c = 0; c < models.size(); ++c) {
-    if (evidence[c].accepted) accepted.push_back(models[c]);
+    if (!evidence[c].accepted) continue;
+    accepted.push_back(models[c]);
+    const bool horizontal = models[c].normal.dot(up) >= support_rule_.min_cos_horizontal;
+    if (table.table >= 0 && table.roles[c] == CandidateRole::table) {
+      roles.push_back(PlaneRole::table);
+      if (static_cast<int>(c) == table.table) table_id = static_cast<std::int32_t>(accepted.size());
+    } else if (horizontal && table.table >= 0 && table.height_m[c] < 0.0F) {
+      roles.push_back(PlaneRole::floor);
+    } else {
+      roles.push_back(PlaneRole::wall);
+    }
   }
   const float delta_m = support_rule_.inlier_distance_m;
 
@@ -298,12 +385,16 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const auto patch_slot = [&](std::int32_t id) {
     return id > 0 && id <= patches.count ? static_cast<std::size_t>(id) : std::size_t{0};
   };
-  // Per patch: valid points, those clearly off the planes (beyond 2 delta from all), and per
-  // (patch, plane) the points within delta and their squared distances, so that the plane
-  // statistics need no second look at the points once the patches are judged.
+  // Per patch: valid points, those clearly off the planes (beyond 2 delta from all), their
+  // summed height above the table, and per (patch, plane) the points within delta and their
+  // squared distances, so that the patches are judged and the plane statistics made with no
+  // second look at the points.
   const std::size_t plane_count = accepted.size();
+  const PlaneModel* table_plane = table_id > 0 ? &accepted[table_id - 1] : nullptr;
   std::vector<std::int64_t> patch_px(patch_slots, 0);
   std::vector<std::int64_t> off_px(patch_slots, 0);
+  std::vector<double> table_height_sum_m(patch_slots, 0.0);  // of its points within delta of it
+  std::vector<std::int64_t> table_near_px(patch_slots, 0);
   std::vector<std::int64_t> near_px(patch_slots * plane_count, 0);
   std::vector<double> near_squared_m2(patch_slots * plane_count, 0.0);
   std::int64_t valid_px = 0;
@@ -327,20 +418,44 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
       }
       ++patch_px[slot];
       off_px[slot] += off ? 1 : 0;
+      if (table_plane != nullptr) {
+        const float height = table_plane->signed_distance_m(p);
+        if (std::abs(height) <= delta_m) {
+          table_height_sum_m[slot] += height;
+          ++table_near_px[slot];
+        }
+      }
     }
     plane_of[i] = near;
   }
-  // Patches whose points within delta join the planes: all but object faces.
-  std::vector<char> plane_patch(patch_slots, 1);
+  // Which patches give their points within delta to the planes: all but object faces. A face
+  // that lies mostly well off the planes keeps them from every plane (the bottom band of a box
+  // side). A patch whose points within delta of the table lie on average more than half of
+  // min_object_height_m above it keeps them from the table's level and the floor: the top of a
+  // book 1 cm thick (its points lie min_object_height_m and more above), the bottom band of a
+  // flat object's side (evenly spread over 0..delta). The table's own points lie around 0.
+  std::vector<char> joins_any(patch_slots, 1);
+  std::vector<char> joins_horizontal(patch_slots, 1);
   for (std::size_t slot = 1; slot < patch_slots; ++slot) {
-    plane_patch[slot] = static_cast<double>(off_px[slot]) <
-                        object_face_off_plane_fraction_ * static_cast<double>(patch_px[slot]);
+    const auto size = static_cast<double>(patch_px[slot]);
+    joins_any[slot] = static_cast<double>(off_px[slot]) < object_face_off_plane_fraction_ * size;
+    const bool raised = table_near_px[slot] > 0 &&
+                        table_height_sum_m[slot] > 0.5 * static_cast<double>(min_object_height_m_) *
+                                                       static_cast<double>(table_near_px[slot]);
+    joins_horizontal[slot] = joins_any[slot] != 0 && !raised ? 1 : 0;
   }
+  std::vector<char> horizontal_support(plane_count, 0);
+  for (std::size_t c = 0; c < plane_count; ++c) {
+    horizontal_support[c] = roles[c] != PlaneRole::wall ? 1 : 0;
+  }
+  const auto joins = [&](std::size_t slot, std::size_t c) {
+    return horizontal_support[c] != 0 ? joins_horizontal[slot] != 0 : joins_any[slot] != 0;
+  };
   std::vector<std::int64_t> inliers(plane_count, 0);
   std::vector<double> squared_sum(plane_count, 0.0);
   for (std::size_t slot = 0; slot < patch_slots; ++slot) {
-    if (plane_patch[slot] == 0) continue;
     for (std::size_t c = 0; c < plane_count; ++c) {
+      if (!joins(slot, c)) continue;
       inliers[c] += near_px[slot * plane_count + c];
       squared_sum[c] += near_squared_m2[slot * plane_count + c];
     }
@@ -350,7 +465,7 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   std::int64_t plane_px = 0;
   for (std::size_t i = 0; i < total; ++i) {
     const std::size_t slot = patch_slot(label[i]);
-    if (plane_of[i] != 0 && plane_patch[slot] != 0) {
+    if (plane_of[i] != 0 && joins(slot, static_cast<std::size_t>(plane_of[i] - 1))) {
       left[i] = 0;
       ++plane_px;
       continue;
@@ -382,7 +497,17 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     plane.rms_m =
         inliers[c] > 0 ? std::sqrt(squared_sum[c] / static_cast<double>(inliers[c])) : 0.0;
     plane.horizontal = plane.normal.dot(planes.up) >= support_rule_.min_cos_horizontal;
+    plane.role = roles[c];
     planes.planes.push_back(plane);
+  }
+  if (table_id > 0) {
+    // Every plane of the table's level outlines the table.
+    std::vector<char> table_ids(plane_count + 1, 0);
+    for (std::size_t c = 0; c < plane_count; ++c)
+      table_ids[c + 1] = roles[c] == PlaneRole::table;
+    planes.table_id = table_id;
+    planes.table_outline_m = table_outline(plane_labels.labels, xyz, table_ids,
+                                           accepted[table_id - 1], up, kOutlineStridePx);
   }
 
   if (valid_px == 0) {

@@ -8,6 +8,7 @@
 
 #include "facet/stage.hpp"
 #include "planes/plane_fit.hpp"
+#include "planes/scene_model.hpp"
 #include "planes/support_rule.hpp"
 
 namespace facet::planes {
@@ -21,10 +22,12 @@ class SupportPlaneStage final : public Stage {
  private:
   PlaneFitRule fit_rule_;
   SupportRule support_rule_;
+  TableRule table_rule_;
   std::int64_t candidate_min_px_;
   int max_candidates_;
   std::int64_t max_fit_points_;
   double object_face_off_plane_fraction_;
+  float min_object_height_m_;
   double horizontal_max_deg_;
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto

@@ -44,9 +44,9 @@ SampleBits classify_samples(const cv::Mat& points, const std::vector<PlaneModel>
 }  // namespace
 
 std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
-                                              const std::vector<PlaneModel>& candidates,
-                                              int dominant, const Eigen::Vector3f& up,
-                                              const SupportRule& rule) {
+                                              const std::vector<PlaneModel>& candidates, int table,
+                                              const std::vector<CandidateRole>& roles,
+                                              const Eigen::Vector3f& up, const SupportRule& rule) {
   if (candidates.size() > 32) throw std::invalid_argument("at most 32 candidate planes");
   std::vector<CandidateEvidence> evidence(candidates.size());
   if (candidates.empty()) return evidence;
@@ -61,33 +61,38 @@ std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
     evidence[i].view_fraction = static_cast<double>(on) / valid;
   }
 
-  // An object face stands on the dominant plane: part of the table lies behind it (a box top has
+  // An object face stands on the table: part of the table lies behind it (a box top has
   // all of it behind, a box front the table part beyond the box). Walls and the floor have the
   // table in front of them.
-  if (dominant >= 0) {
-    const std::uint32_t dominant_bit = 1U << static_cast<unsigned>(dominant);
-    std::size_t dominant_on = 0;
+  if (table >= 0) {
+    const std::uint32_t table_bit = 1U << static_cast<unsigned>(table);
+    std::size_t table_on = 0;
     for (const std::uint32_t mask : bits.on)
-      dominant_on += (mask & dominant_bit) != 0U ? 1 : 0;
+      table_on += (mask & table_bit) != 0U ? 1 : 0;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       std::size_t behind = 0;
       for (std::size_t s = 0; s < bits.on.size(); ++s) {
-        if ((bits.on[s] & dominant_bit) != 0U) behind += (bits.behind[s] >> i) & 1U;
+        if ((bits.on[s] & table_bit) != 0U) behind += (bits.behind[s] >> i) & 1U;
       }
       evidence[i].support_behind_fraction =
-          dominant_on > 0 ? static_cast<double>(behind) / static_cast<double>(dominant_on) : 0.0;
+          table_on > 0 ? static_cast<double>(behind) / static_cast<double>(table_on) : 0.0;
     }
   }
 
   std::uint32_t accepted = 0;
-  if (dominant >= 0) accepted |= 1U << static_cast<unsigned>(dominant);
+  std::uint32_t never = 0;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (roles[i] == CandidateRole::table) accepted |= 1U << i;
+    if (roles[i] == CandidateRole::object_top) never |= 1U << i;
+  }
+  if (table >= 0) accepted |= 1U << static_cast<unsigned>(table);
   // Each round may accept planes (never reject one), so this ends after at most one round per
   // candidate.
   for (bool changed = true; changed;) {
     changed = false;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const std::uint32_t self = 1U << i;
-      if ((accepted & self) != 0U) continue;
+      if (((accepted | never) & self) != 0U) continue;
       const std::uint32_t removed = accepted | self;
       std::size_t objects = 0;
       std::size_t behind = 0;
@@ -99,7 +104,7 @@ std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
       const double denominator =
           std::max(static_cast<double>(objects), rule.min_object_fraction * valid);
       evidence[i].behind_fraction = static_cast<double>(behind) / denominator;
-      // A large horizontal plane above a dominant floor is a table, not a box top; a large
+      // A large horizontal plane above a floor is a table, not a box top; a large
       // vertical face that stands on the table is still an object (a big box close up).
       const bool large_table = evidence[i].view_fraction >= rule.large_view_fraction &&
                                std::abs(candidates[i].normal.dot(up)) >= rule.min_cos_horizontal;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "planes/plane_fit.hpp"
+#include "planes/scene_model.hpp"
 
 namespace facet::planes {
 
@@ -40,11 +41,12 @@ struct CandidateEvidence {
   bool accepted = false;
 };
 
-// At most 32 candidates (one bit each per sample). `dominant` is the index of the dominant
-// horizontal candidate (always accepted) or -1; `up` is world up (unit, camera frame).
+// At most 32 candidates (one bit each per sample). `table` is the index of the table's candidate
+// or -1 (scene_model.hpp); the candidates whose role is table are accepted from the start, object
+// tops never, the undecided ones by the rule above. `up` is world up (unit, camera frame).
 std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
-                                              const std::vector<PlaneModel>& candidates,
-                                              int dominant, const Eigen::Vector3f& up,
-                                              const SupportRule& rule);
+                                              const std::vector<PlaneModel>& candidates, int table,
+                                              const std::vector<CandidateRole>& roles,
+                                              const Eigen::Vector3f& up, const SupportRule& rule);
 
 }  // namespace facet::planes

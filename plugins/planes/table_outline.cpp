@@ -1,0 +1,75 @@
+#include "planes/table_outline.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace facet::planes {
+namespace {
+
+using Point2 = Eigen::Vector2d;
+
+double cross(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Andrew's monotone chain; counter-clockwise, no collinear vertices.
+std::vector<Point2> convex_hull(std::vector<Point2> points) {
+  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return {};
+  std::vector<Point2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const Point2& p : points) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0)
+      --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {
+    const Point2& p = points[i - 1];
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p) <= 0.0)
+      --k;
+    hull[k++] = p;
+  }
+  hull.resize(k - 1);
+  return hull.size() >= 3 ? hull : std::vector<Point2>{};
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> table_outline(const cv::Mat& plane_labels, const cv::Mat& xyz,
+                                           const std::vector<char>& table_ids,
+                                           const PlaneModel& table, const Eigen::Vector3f& up,
+                                           int stride_px) {
+  // A right-handed basis of the table plane, seen from above: e1 x e2 = n (n faces up).
+  const Eigen::Vector3d n = table.normal.cast<double>();
+  const Eigen::Vector3d helper =
+      std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d e1 = n.cross(helper).normalized();
+  const Eigen::Vector3d e2 = n.cross(e1);
+  const bool flip = n.dot(up.cast<double>()) < 0.0;  // keep counter-clockwise seen from above
+  const Eigen::Vector3d origin = -static_cast<double>(table.offset_m) * n;
+
+  std::vector<Point2> projected;
+  const int stride = std::max(1, stride_px);
+  for (int row = 0; row < plane_labels.rows; row += stride) {
+    const auto* id = plane_labels.ptr<std::int32_t>(row);
+    const auto* p = xyz.ptr<float>(row);
+    for (int col = 0; col < plane_labels.cols; col += stride) {
+      const auto plane = static_cast<std::size_t>(id[col]);
+      if (plane == 0 || plane >= table_ids.size() || table_ids[plane] == 0) continue;
+      const Eigen::Vector3d point(p[3 * col], p[3 * col + 1], p[3 * col + 2]);
+      const Eigen::Vector3d offset = point - origin;
+      projected.emplace_back(offset.dot(e1), flip ? -offset.dot(e2) : offset.dot(e2));
+    }
+  }
+  std::vector<Eigen::Vector3d> outline;
+  for (const Point2& q : convex_hull(std::move(projected))) {
+    outline.push_back(origin + q.x() * e1 + (flip ? -q.y() : q.y()) * e2);
+  }
+  return outline;
+}
+
+}  // namespace facet::planes
