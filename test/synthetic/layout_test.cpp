@@ -114,7 +114,9 @@ TEST(SyntheticLayout, EveryObjectStandsOnTheTableOrOnAFlatTop) {
         EXPECT_TRUE(supported) << "object " << item.label << " floats at z = " << z;
       }
       // The classic presets stack exactly these; the hard cases are checked in hard_case_test.
-      if (range.min == range.max) EXPECT_EQ(stacked, preset == "stacked_occluded" ? 4 : 0);
+      if (range.min == range.max) {
+        EXPECT_EQ(stacked, preset == "stacked_occluded" ? 4 : 0);
+      }
     }
   }
 }
