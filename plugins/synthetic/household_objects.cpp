@@ -93,8 +93,8 @@ Solid random_cup(RandomStream& random) {
 }
 
 Solid random_bowl(RandomStream& random, double scale) {
-  // The rim at 0.2-0.5 sphere radii below the sphere centre: 0.87-0.98 of the sphere radius
-  // across, so the rim's 12-20 cm fix the sphere radius to about 6-10 cm.
+  // The rim lies 0.2-0.5 sphere radii below the sphere centre, so its radius is 0.87-0.98 of
+  // the sphere radius: a sphere radius of 6.2-10 cm gives rims of 11-20 cm across.
   const double sphere_radius = scale * random.uniform(0.062, 0.1);
   const double wall = random.uniform(0.004, 0.006);
   const double half_height = 0.5 * random.uniform(0.5, 0.8) * (sphere_radius - 0.5 * wall);

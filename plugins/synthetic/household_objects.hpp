@@ -21,7 +21,7 @@ Solid flat_object(RandomStream& random);
 
 // A cup: 7-9 cm across, 8-11 cm high, walls 3-5 mm.
 Solid random_cup(RandomStream& random);
-// A bowl: rim `scale` * 12-20 cm across, 0.5-0.8 of its sphere radius deep, walls 4-6 mm.
+// A bowl: rim `scale` * 11-20 cm across, 3-8 cm deep (0.5-0.8 of its sphere radius), walls 4-6 mm.
 Solid random_bowl(RandomStream& random, double scale);
 // A tall box like a cereal packet: 16-20 cm wide, 5-8 cm deep, 24-32 cm high.
 Solid cereal_box(RandomStream& random);
