@@ -147,7 +147,8 @@ StageSpec SyntheticSource::spec() {
              {.unit = "m", .min = 0.3, .max = 20.0})
       .param("min_visible_px", 150,
              "Every object shows at least this many pixels to a perfect camera; layouts that "
-             "do not are drawn again.",
+             "do not are drawn again (with the view drawn again too when camera, table_edge or "
+             "wall_placement is random; then only pixels at min_depth_m or farther count).",
              {.unit = "px", .min = 1.0})
       .param("noise", true,
              "Kinect v1 effects on; false: the exact depth rounded to mm (range limits apply).")
@@ -289,7 +290,12 @@ SyntheticSource::Rendered SyntheticSource::make_scene(std::uint64_t scene_index)
       continue;
     }
     rendered.ideal = render_ideal(rendered.scene, rendered.view.rig, max_ray_depth_m);
-    const std::vector<int> visible = visible_pixels(rendered.ideal, rendered.scene.object_count);
+    // A drawn camera may come nearer than the sensor measures (0.64 m from the look-at point at
+    // its lowest and steepest): there only what it can measure counts. The fixed camera keeps
+    // the rule of earlier versions, so that its layouts stay the same.
+    const double counted_from_m = view_is_drawn(view_) ? noise_.min_depth_m : 0.0;
+    const std::vector<int> visible =
+        visible_pixels(rendered.ideal, rendered.scene.object_count, counted_from_m);
     int fewest = visible.size() > 1 ? visible[1] : 0;
     for (std::size_t label = 1; label < visible.size(); ++label)
       fewest = std::min(fewest, visible[label]);
