@@ -28,14 +28,13 @@ IdealFrame render_ideal(const Scene& scene, const CameraRig& rig, double max_dep
   return frame;
 }
 
-std::vector<int> visible_pixels(const IdealFrame& frame, int object_count, double min_depth_m) {
+std::vector<int> visible_pixels(const IdealFrame& frame, int object_count) {
   std::vector<int> counts(static_cast<std::size_t>(object_count) + 1, 0);
   for (int v = 0; v < frame.labels.rows; ++v) {
     const auto* labels = frame.labels.ptr<std::int32_t>(v);
     const auto* depth = frame.depth_m.ptr<double>(v);
     for (int u = 0; u < frame.labels.cols; ++u) {
-      if (depth[u] > 0.0 && depth[u] >= min_depth_m && labels[u] >= 0 && labels[u] <= object_count)
-        ++counts[labels[u]];
+      if (depth[u] > 0.0 && labels[u] >= 0 && labels[u] <= object_count) ++counts[labels[u]];
     }
   }
   return counts;

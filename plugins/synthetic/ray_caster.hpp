@@ -19,9 +19,7 @@ struct IdealFrame {
 // Rays go no farther than `max_depth_m` along the optical axis.
 IdealFrame render_ideal(const Scene& scene, const CameraRig& rig, double max_depth_m);
 
-// Visible pixels per label (index = label, 0..object_count), counting only depths of at least
-// `min_depth_m`.
-std::vector<int> visible_pixels(const IdealFrame& frame, int object_count,
-                                double min_depth_m = 0.0);
+// Visible pixels per label (index = label, 0..object_count).
+std::vector<int> visible_pixels(const IdealFrame& frame, int object_count);
 
 }  // namespace facet::synthetic

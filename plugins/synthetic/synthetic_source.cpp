@@ -36,6 +36,26 @@ std::string format_number(double value) {
   return text;
 }
 
+// Pixels per label that the sensor can measure at all: in its range and, with shadows on, lit
+// by the projector (the dropouts and the noise come on top of this).
+std::vector<int> measurable_pixels(const IdealFrame& frame, const Scene& scene,
+                                   const CameraRig& rig, const KinectNoise& noise) {
+  std::vector<int> counts(static_cast<std::size_t>(scene.object_count) + 1, 0);
+  const bool shadows = noise.enabled && noise.shadows;
+  for (int v = 0; v < frame.labels.rows; ++v) {
+    const auto* labels = frame.labels.ptr<std::int32_t>(v);
+    const auto* depth = frame.depth_m.ptr<double>(v);
+    const auto* points = frame.points.ptr<cv::Vec3d>(v);
+    for (int u = 0; u < frame.labels.cols; ++u) {
+      if (labels[u] <= 0 || labels[u] > scene.object_count) continue;
+      if (depth[u] < noise.min_depth_m || depth[u] > noise.max_depth_m) continue;
+      if (shadows && !lit_by_projector(scene, rig, points[u])) continue;
+      ++counts[static_cast<std::size_t>(labels[u])];
+    }
+  }
+  return counts;
+}
+
 }  // namespace
 
 StageSpec SyntheticSource::spec() {
@@ -148,7 +168,8 @@ StageSpec SyntheticSource::spec() {
       .param("min_visible_px", 150,
              "Every object shows at least this many pixels to a perfect camera; layouts that "
              "do not are drawn again (with the view drawn again too when camera, table_edge or "
-             "wall_placement is random; then only pixels at min_depth_m or farther count).",
+             "wall_placement is random; then only pixels the sensor can measure count: in "
+             "[min_depth_m, max_depth_m] and, with shadows, lit by the projector).",
              {.unit = "px", .min = 1.0})
       .param("noise", true,
              "Kinect v1 effects on; false: the exact depth rounded to mm (range limits apply).")
@@ -290,12 +311,14 @@ SyntheticSource::Rendered SyntheticSource::make_scene(std::uint64_t scene_index)
       continue;
     }
     rendered.ideal = render_ideal(rendered.scene, rendered.view.rig, max_ray_depth_m);
-    // A drawn camera may come nearer than the sensor measures (0.64 m from the look-at point at
-    // its lowest and steepest): there only what it can measure counts. The fixed camera keeps
+    // A drawn view may bring the camera nearer than the sensor measures (0.64 m from the
+    // look-at point at its lowest and steepest) and hide a small object in a tall one's
+    // projector shadow: there only what the sensor can measure counts. The fixed camera keeps
     // the rule of earlier versions, so that its layouts stay the same.
-    const double counted_from_m = view_is_drawn(view_) ? noise_.min_depth_m : 0.0;
     const std::vector<int> visible =
-        visible_pixels(rendered.ideal, rendered.scene.object_count, counted_from_m);
+        view_is_drawn(view_)
+            ? measurable_pixels(rendered.ideal, rendered.scene, rendered.view.rig, noise_)
+            : visible_pixels(rendered.ideal, rendered.scene.object_count);
     int fewest = visible.size() > 1 ? visible[1] : 0;
     for (std::size_t label = 1; label < visible.size(); ++label)
       fewest = std::min(fewest, visible[label]);
