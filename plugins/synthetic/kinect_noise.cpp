@@ -7,14 +7,6 @@
 namespace facet::synthetic {
 namespace {
 
-// Whether the projector lights the surface point: the segment from the projector to it meets no
-// other surface first.
-bool lit_by_projector(const Scene& scene, const CameraRig& rig, const Vec3& point) {
-  const Ray ray{rig.projector_position, point - rig.projector_position};
-  // t = 1 is the point itself; stop a little before it so that its own surface does not count.
-  return !first_hit(scene, ray, 1e-6, 1.0 - 1e-4);
-}
-
 // Incidence angle, in degrees, between a surface normal and the ray that reaches it.
 double incidence_deg(const Vec3& normal, const Vec3& ray_direction) {
   const double cosine = std::abs(normal.dot(ray_direction)) / cv::norm(ray_direction);
@@ -72,6 +64,12 @@ std::uint16_t to_millimetres(double z_m) {
 }
 
 }  // namespace
+
+bool lit_by_projector(const Scene& scene, const CameraRig& rig, const Vec3& point) {
+  const Ray ray{rig.projector_position, point - rig.projector_position};
+  // t = 1 is the point itself; stop a little before it so that its own surface does not count.
+  return !first_hit(scene, ray, 1e-6, 1.0 - 1e-4);
+}
 
 double KinectNoise::axial_sigma_m(double z_m, double incidence_rad) const {
   constexpr double kMaxAngle = 89.5 * std::numbers::pi / 180.0;

@@ -38,6 +38,10 @@ struct KinectNoise {
   }
 };
 
+// Whether the projector lights the surface point: the segment from the projector to it meets no
+// other surface first (else the point lies in its shadow and gets no depth).
+bool lit_by_projector(const Scene& scene, const CameraRig& rig, const Vec3& point);
+
 // Depth in millimetres (CV_16UC1, 0 = no measurement) of `frame` as the sensor delivers it.
 // `random` supplies the noise; the scene is needed for the projector's view (shadows).
 cv::Mat measure_depth(const IdealFrame& frame, const Scene& scene, const CameraRig& rig,

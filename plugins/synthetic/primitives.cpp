@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "synthetic/shells.hpp"
+
 namespace facet::synthetic {
 namespace {
 
@@ -164,6 +166,10 @@ double Solid::bounding_radius() const {
       return std::hypot(half_size[0], half_size[2]);
     case Shape::sphere:
       return half_size[0];
+    case Shape::cup:
+      return std::hypot(half_size[0], half_size[2]);
+    case Shape::bowl:
+      return std::hypot(bowl_rim_radius(half_size[0], half_size[2], wall), half_size[2]);
     case Shape::plane:
       return kInfinity;
   }
@@ -198,6 +204,12 @@ std::optional<RayHit> Solid::intersect(const Ray& ray, double t_min, double t_ma
       break;
     case Shape::plane:
       hit = hit_plane(o, d, t_min, t_max);
+      break;
+    case Shape::cup:
+      hit = hit_cup(o, d, half_size[0], half_size[2], wall, t_min, t_max);
+      break;
+    case Shape::bowl:
+      hit = hit_bowl(o, d, half_size[0], half_size[2], wall, t_min, t_max);
       break;
   }
   if (hit) hit->normal = rotation * hit->normal;

@@ -26,6 +26,10 @@ enum class Shape {
   cylinder,     // local z is the axis: radius half_size[0], half length half_size[2]
   sphere,       // radius half_size[0]
   plane,        // infinite plane through `centre` with local z as its normal
+  cup,          // open cylinder shell with a bottom: outer radius half_size[0], half height
+                // half_size[2], side and bottom `wall` thick (shells.hpp)
+  bowl,         // spherical shell of radius half_size[0] cut flat at foot and rim, half height
+                // half_size[2], `wall` thick (shells.hpp)
 };
 
 // A solid placed in the world: local coordinates p_local = rotation^T * (p_world - centre).
@@ -35,6 +39,7 @@ struct Solid {
   Mat3 rotation = Mat3::eye();  // local to world
   Vec3 half_size;
   double rounding = 0.0;  // rounded_box only
+  double wall = 0.0;      // cup and bowl only: thickness of the shell
 
   // Radius of a sphere around `centre` enclosing the solid (infinite for a plane).
   double bounding_radius() const;

@@ -14,6 +14,7 @@ namespace {
 // Purposes of the random streams derived from the seed.
 constexpr std::uint64_t kLayoutStream = 1;
 constexpr std::uint64_t kNoiseStream = 2;
+constexpr std::uint64_t kViewStream = 3;
 constexpr int kLayoutAttempts = 60;
 
 std::vector<ParamValue> preset_choices() {
@@ -35,21 +36,46 @@ std::string format_number(double value) {
   return text;
 }
 
+// Pixels per label that the sensor can measure at all: in its range and, with shadows on, lit
+// by the projector (the dropouts and the noise come on top of this).
+std::vector<int> measurable_pixels(const IdealFrame& frame, const Scene& scene,
+                                   const CameraRig& rig, const KinectNoise& noise) {
+  std::vector<int> counts(static_cast<std::size_t>(scene.object_count) + 1, 0);
+  const bool shadows = noise.enabled && noise.shadows;
+  for (int v = 0; v < frame.labels.rows; ++v) {
+    const auto* labels = frame.labels.ptr<std::int32_t>(v);
+    const auto* depth = frame.depth_m.ptr<double>(v);
+    const auto* points = frame.points.ptr<cv::Vec3d>(v);
+    for (int u = 0; u < frame.labels.cols; ++u) {
+      if (labels[u] <= 0 || labels[u] > scene.object_count) continue;
+      if (depth[u] < noise.min_depth_m || depth[u] > noise.max_depth_m) continue;
+      if (shadows && !lit_by_projector(scene, rig, points[u])) continue;
+      ++counts[static_cast<std::size_t>(labels[u])];
+    }
+  }
+  return counts;
+}
+
 }  // namespace
 
 StageSpec SyntheticSource::spec() {
   StageSpec spec(
       "io.synthetic",
       "Generates table-top scenes as a Kinect v1 sees them, with ground-truth labels.\n"
-      "Boxes, rounded boxes, cylinders (upright and lying) and spheres on a table (optionally "
-      "with a wall behind it), ray-cast exactly and then measured with a Kinect v1 noise model: "
+      "Boxes, rounded boxes, cylinders (upright and lying), spheres, flat objects (books, "
+      "magazines, trays, tins), open cups and bowls on a table (optionally with its front edge "
+      "and the floor in view, and a wall behind it), ray-cast exactly and then measured with a "
+      "Kinect v1 noise model: "
       "range limits, projector shadows, dropouts beside depth jumps and at grazing angles, "
       "axial noise growing with the square of the distance and with the incidence angle, and "
       "depth from disparity quantised to 1/8 px (docs/synthetic.md). Presets of increasing "
       "complexity follow the levels of "
-      "the paper's Table II. A static scene (the default) is the same layout in every frame with "
+      "the paper's Table II; on_flat, pile20, office and containers are hard cases. The camera "
+      "pose, the table edge and the wall can be drawn per layout from the seed. A static scene "
+      "(the default) is the same layout in every frame with "
       "independent noise, for stability measurements. Everything is deterministic for a seed. "
-      "Reports the metrics valid_ratio (measured pixels / all) and objects_visible.");
+      "Reports the metrics valid_ratio (measured pixels / all), objects_visible, camera_height_m, "
+      "camera_tilt_deg, wall_from_camera_m (0 = no wall) and table_edge_in_view (0 or 1).");
   spec.output<DepthImage>("depth",
                           "Depth, CV_16UC1 in mm (0 = no measurement), with the frame index, the "
                           "stem <preset>_<seed>_<index, 6 digits>, a timestamp of index / fps and "
@@ -61,7 +87,11 @@ StageSpec SyntheticSource::spec() {
       .param("preset", "separated3",
              "Scene: separated3 (3 separated objects), touching_pairs (5 objects: two touching "
              "pairs and one alone), stacked_occluded (9 objects: three stacks and an occluding "
-             "pair), clutter20 (20 smaller objects close together).",
+             "pair), clutter20 (20 smaller objects close together); hard cases: on_flat (6-15: "
+             "books, magazines, trays, tins with 1-3 objects standing on each, a few others), "
+             "pile20 (15-25 packed close: touching, stacked, flat, cups, bowls), office (10-16: "
+             "books, a magazine, a tin, cereal boxes, bowls, cups, a lying can, small boxes), "
+             "containers (6-10: bowls, cups, boxes).",
              {.choices = preset_choices(), .origin = "the levels of the paper's Table II"})
       .param("seed", 1, "Seed of the layout and the noise; the same seed gives the same frames.",
              {.min = 0.0})
@@ -86,20 +116,60 @@ StageSpec SyntheticSource::spec() {
               .min = 0.0,
               .max = 100000.0,
               .origin = "525: the OpenNI Kinect value, as in data/mosd"})
+      .param("camera", "fixed",
+             "fixed: the camera at camera_distance_m and camera_tilt_deg; random: its height "
+             "above the table and its tilt drawn per layout from the seed, uniformly in "
+             "[camera_height_min_m, camera_height_max_m] and [camera_tilt_min_deg, "
+             "camera_tilt_max_deg]. Either way it looks at the middle of the objects' area.",
+             {.choices = {std::string("fixed"), std::string("random")}})
       .param("camera_distance_m", 0.95,
-             "Distance from the camera to the table point at the image centre.",
+             "camera fixed: distance from the camera to the table point at the image centre.",
              {.unit = "m", .min = 0.3, .max = 5.0, .origin = "like the mOSD frames"})
-      .param("camera_tilt_deg", 50.0, "Angle of the optical axis below the horizontal.",
+      .param("camera_tilt_deg", 50.0,
+             "camera fixed: angle of the optical axis below the horizontal.",
              {.unit = "deg", .min = 10.0, .max = 90.0, .origin = "like the mOSD frames"})
+      .param("camera_height_min_m", 0.6, "camera random: lowest camera height above the table.",
+             {.unit = "m", .min = 0.2, .max = 4.0})
+      .param("camera_height_max_m", 1.8, "camera random: highest camera height above the table.",
+             {.unit = "m", .min = 0.2, .max = 4.0})
+      .param("camera_tilt_min_deg", 30.0, "camera random: smallest tilt below the horizontal.",
+             {.unit = "deg", .min = 10.0, .max = 90.0})
+      .param("camera_tilt_max_deg", 70.0, "camera random: largest tilt below the horizontal.",
+             {.unit = "deg", .min = 10.0, .max = 90.0})
       .param("table_height_m", 0.72, "Height of the table top above the floor.",
              {.unit = "m", .min = 0.05, .max = 3.0})
-      .param("wall", false, "A wall behind the table (background, label 0).")
+      .param("table_edge", "hidden",
+             "hidden: the table's front edge lies outside the image; in_view: it crosses the "
+             "lower part of the image (30 % of the way from the nearest table point in view to "
+             "the image centre), so its 3 cm front face and the floor 0.72 m below show; "
+             "random: either, drawn per layout (half each).",
+             {.choices = {std::string("hidden"), std::string("in_view"), std::string("random")}})
+      .param("wall", false,
+             "wall_placement fixed: a wall behind the table (background, label 0), which ends "
+             "the table.")
       .param("wall_distance_m", 0.45,
-             "Distance of the wall behind the table point at the image centre (along the view).",
+             "wall_placement fixed: distance of the wall behind the table point at the image "
+             "centre (along the view).",
              {.unit = "m", .min = 0.3, .max = 5.0})
+      .param("wall_placement", "fixed",
+             "fixed: the wall of wall and wall_distance_m; camera: a wall wall_camera_distance_m "
+             "from the camera (horizontally, along the view), the table ending 0.6 m beyond the "
+             "image centre or at the wall; random: per layout, a wall in three layouts of four, "
+             "its distance from the camera drawn in [wall_camera_min_m, wall_camera_max_m] and "
+             "at least 0.45 m beyond the image centre's table point.",
+             {.choices = {std::string("fixed"), std::string("camera"), std::string("random")}})
+      .param("wall_camera_distance_m", 2.5,
+             "wall_placement camera: horizontal distance from the camera to the wall.",
+             {.unit = "m", .min = 0.3, .max = 20.0})
+      .param("wall_camera_min_m", 1.5, "wall_placement random: nearest wall from the camera.",
+             {.unit = "m", .min = 0.3, .max = 20.0})
+      .param("wall_camera_max_m", 4.0, "wall_placement random: farthest wall from the camera.",
+             {.unit = "m", .min = 0.3, .max = 20.0})
       .param("min_visible_px", 150,
              "Every object shows at least this many pixels to a perfect camera; layouts that "
-             "do not are drawn again.",
+             "do not are drawn again (with the view drawn again too when camera, table_edge or "
+             "wall_placement is random; then only pixels the sensor can measure count: in "
+             "[min_depth_m, max_depth_m] and, with shadows, lit by the projector).",
              {.unit = "px", .min = 1.0})
       .param("noise", true,
              "Kinect v1 effects on; false: the exact depth rounded to mm (range limits apply).")
@@ -153,12 +223,29 @@ SyntheticSource::SyntheticSource(const Params& params)
       frames_(params.get_int("frames")),
       new_scene_each_frame_(params.get_string("scene") == "new"),
       fps_hz_(params.get_double("fps")),
-      camera_distance_m_(params.get_double("camera_distance_m")),
-      camera_tilt_deg_(params.get_double("camera_tilt_deg")),
       min_visible_px_(static_cast<int>(params.get_int("min_visible_px"))) {
-  room_.table_height_m = params.get_double("table_height_m");
-  room_.wall = params.get_bool("wall");
-  room_.wall_distance_m = params.get_double("wall_distance_m");
+  view_.random_camera = params.get_string("camera") == "random";
+  view_.camera_distance_m = params.get_double("camera_distance_m");
+  view_.camera_tilt_deg = params.get_double("camera_tilt_deg");
+  view_.height_min_m = params.get_double("camera_height_min_m");
+  view_.height_max_m = params.get_double("camera_height_max_m");
+  view_.tilt_min_deg = params.get_double("camera_tilt_min_deg");
+  view_.tilt_max_deg = params.get_double("camera_tilt_max_deg");
+  view_.projector_offset_m = params.get_double("baseline_m");
+  const std::string edge = params.get_string("table_edge");
+  view_.table_edge = edge == "in_view"  ? TableEdge::in_view
+                     : edge == "random" ? TableEdge::random
+                                        : TableEdge::hidden;
+  const std::string wall = params.get_string("wall_placement");
+  view_.wall = wall == "camera"   ? WallPlacement::camera
+               : wall == "random" ? WallPlacement::random
+                                  : WallPlacement::fixed;
+  view_.wall_camera_distance_m = params.get_double("wall_camera_distance_m");
+  view_.wall_camera_min_m = params.get_double("wall_camera_min_m");
+  view_.wall_camera_max_m = params.get_double("wall_camera_max_m");
+  view_.room.table_height_m = params.get_double("table_height_m");
+  view_.room.wall = params.get_bool("wall");
+  view_.room.wall_distance_m = params.get_double("wall_distance_m");
 
   noise_.enabled = params.get_bool("noise");
   noise_.axial_noise_scale = params.get_double("axial_noise_scale");
@@ -194,25 +281,44 @@ SyntheticSource::SyntheticSource(const Params& params)
     throw StageError("param min_depth_m=" + format_number(noise_.min_depth_m) +
                      " must be below max_depth_m=" + format_number(noise_.max_depth_m));
   }
-  rig_ = CameraRig::looking_at(intrinsics_, Vec3(0, 0, 0), camera_distance_m_, camera_tilt_deg_,
-                               params.get_double("baseline_m"));
+  auto check_range = [](const char* low_name, double low, const char* high_name, double high) {
+    if (low > high) {
+      throw StageError(std::string("param ") + high_name + "=" + format_number(high) +
+                       " is below " + low_name + "=" + format_number(low) +
+                       ": the range it is drawn from is empty");
+    }
+  };
+  check_range("camera_height_min_m", view_.height_min_m, "camera_height_max_m", view_.height_max_m);
+  check_range("camera_tilt_min_deg", view_.tilt_min_deg, "camera_tilt_max_deg", view_.tilt_max_deg);
+  check_range("wall_camera_min_m", view_.wall_camera_min_m, "wall_camera_max_m",
+              view_.wall_camera_max_m);
 }
 
 SyntheticSource::Rendered SyntheticSource::make_scene(std::uint64_t scene_index) const {
   RandomStream random(mix_seed(seed_, scene_index, kLayoutStream));
+  // Its own stream, so that the layouts of a fixed view are those of earlier versions.
+  RandomStream view_random(mix_seed(seed_, scene_index, kViewStream));
   // Rays end a little beyond the farthest measured depth: what lies farther is never measured.
   const double max_ray_depth_m = noise_.max_depth_m * 1.01;
   std::string last_problem;
   for (int attempt = 0; attempt < kLayoutAttempts; ++attempt) {
     Rendered rendered;
+    rendered.view = make_view(view_, intrinsics_, view_random);
     try {
-      rendered.scene = layout_scene(preset_, room_, random);
+      rendered.scene = layout_scene(preset_, rendered.view.room, random);
     } catch (const std::runtime_error& error) {
       last_problem = error.what();
       continue;
     }
-    rendered.ideal = render_ideal(rendered.scene, rig_, max_ray_depth_m);
-    const std::vector<int> visible = visible_pixels(rendered.ideal, rendered.scene.object_count);
+    rendered.ideal = render_ideal(rendered.scene, rendered.view.rig, max_ray_depth_m);
+    // A drawn view may bring the camera nearer than the sensor measures (0.64 m from the
+    // look-at point at its lowest and steepest) and hide a small object in a tall one's
+    // projector shadow: there only what the sensor can measure counts. The fixed camera keeps
+    // the rule of earlier versions, so that its layouts stay the same.
+    const std::vector<int> visible =
+        view_is_drawn(view_)
+            ? measurable_pixels(rendered.ideal, rendered.scene, rendered.view.rig, noise_)
+            : visible_pixels(rendered.ideal, rendered.scene.object_count);
     int fewest = visible.size() > 1 ? visible[1] : 0;
     for (std::size_t label = 1; label < visible.size(); ++label)
       fewest = std::min(fewest, visible[label]);
@@ -223,8 +329,8 @@ SyntheticSource::Rendered SyntheticSource::make_scene(std::uint64_t scene_index)
   throw StageError("preset '" + preset_ + "', seed " + std::to_string(seed_) + ": no layout in " +
                    std::to_string(kLayoutAttempts) + " attempts shows every object (" +
                    last_problem +
-                   "); check camera_distance_m, camera_tilt_deg, the image size "
-                   "and min_visible_px");
+                   "); check camera_distance_m, camera_tilt_deg (or the camera ranges), the "
+                   "image size and min_visible_px");
 }
 
 void SyntheticSource::open(const OpenContext& /*ctx*/) {
@@ -244,7 +350,8 @@ void SyntheticSource::process(ProcessContext& ctx) {
   const Rendered& rendered = new_scene_each_frame_ ? *fresh : *static_scene_;
 
   RandomStream random(mix_seed(seed_, static_cast<std::uint64_t>(index), kNoiseStream));
-  cv::Mat depth_mm = measure_depth(rendered.ideal, rendered.scene, rig_, noise_, random);
+  cv::Mat depth_mm =
+      measure_depth(rendered.ideal, rendered.scene, rendered.view.rig, noise_, random);
 
   cv::Mat labels = cv::Mat::zeros(depth_mm.size(), CV_32SC1);
   rendered.ideal.labels.copyTo(labels, depth_mm > 0);
@@ -269,6 +376,10 @@ void SyntheticSource::process(ProcessContext& ctx) {
   ctx.metric("valid_ratio", static_cast<double>(cv::countNonZero(depth_mm)) /
                                 static_cast<double>(depth_mm.total()));
   ctx.metric("objects_visible", visible);
+  ctx.metric("camera_height_m", rendered.view.camera_height_m);
+  ctx.metric("camera_tilt_deg", rendered.view.camera_tilt_deg);
+  ctx.metric("wall_from_camera_m", rendered.view.wall_from_camera_m);
+  ctx.metric("table_edge_in_view", rendered.view.table_edge_in_view ? 1 : 0);
   ctx.output("depth", DepthImage{header, depth_mm});
   ctx.output("labels", LabelImage{header, labels, rendered.scene.object_count});
   ++emitted_;

@@ -11,6 +11,7 @@
 #include "synthetic/ray_caster.hpp"
 #include "synthetic/scene.hpp"
 #include "synthetic/scene_layout.hpp"
+#include "synthetic/view_setup.hpp"
 
 namespace facet::synthetic {
 
@@ -22,13 +23,14 @@ class SyntheticSource final : public Stage {
   void open(const OpenContext& ctx) override;
   void process(ProcessContext& ctx) override;
 
-  const CameraRig& rig() const { return rig_; }
   const KinectNoise& noise() const { return noise_; }
 
  private:
   // A scene of the preset (seeded by seed and `scene_index`) in which every object shows at
-  // least min_visible_px pixels; throws StageError when no such layout is found.
+  // least min_visible_px pixels; throws StageError when no such layout is found. A drawn view
+  // (camera, table edge, wall) is drawn again with the layout.
   struct Rendered {
+    View view;
     Scene scene;
     IdealFrame ideal;
   };
@@ -40,15 +42,12 @@ class SyntheticSource final : public Stage {
   std::int64_t frames_;
   bool new_scene_each_frame_;
   double fps_hz_;
-  RoomOptions room_;
-  double camera_distance_m_;
-  double camera_tilt_deg_;
+  ViewOptions view_;
   int min_visible_px_;
   KinectNoise noise_;
   CameraIntrinsics intrinsics_;
 
   // State.
-  CameraRig rig_;
   std::optional<Rendered> static_scene_;
   std::int64_t emitted_ = 0;
 };

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "synthetic/scene_layout.hpp"
+#include "synthetic/shells.hpp"
 
 namespace {
 
@@ -58,6 +59,20 @@ bool inside(const Solid& solid, const Vec3& world, double margin) {
       return cv::norm(p) < h[0] - margin;
     case Shape::plane:
       return p[2] < -margin;
+    case Shape::cup: {
+      // Within the outer cylinder, and not in the hole above the bottom.
+      const double radial = std::hypot(p[0], p[1]);
+      const bool in_outer = radial < h[0] - margin && std::abs(p[2]) < h[2] - margin;
+      const bool in_hole =
+          radial <= h[0] - solid.wall + margin && p[2] >= -h[2] + solid.wall - margin;
+      return in_outer && !in_hole;
+    }
+    case Shape::bowl: {
+      // Between the two spheres, between the foot and rim planes.
+      const Vec3 centre(0, 0, facet::synthetic::bowl_sphere_centre_z(h[0], h[2], solid.wall));
+      const double r = cv::norm(p - centre);
+      return r < h[0] - margin && r > h[0] - solid.wall + margin && std::abs(p[2]) < h[2] - margin;
+    }
   }
   return false;
 }
@@ -80,7 +95,9 @@ TEST(SyntheticLayout, EveryObjectStandsOnTheTableOrOnAFlatTop) {
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
       SCOPED_TRACE(preset + " seed " + std::to_string(seed));
       const Scene scene = scene_of(preset, seed);
-      ASSERT_EQ(scene.object_count, facet::synthetic::preset_object_count(preset));
+      const auto range = facet::synthetic::preset_object_range(preset);
+      ASSERT_GE(scene.object_count, range.min);
+      ASSERT_LE(scene.object_count, range.max);
       int stacked = 0;
       for (const auto& item : scene.solids) {
         if (item.label == 0) continue;
@@ -96,7 +113,10 @@ TEST(SyntheticLayout, EveryObjectStandsOnTheTableOrOnAFlatTop) {
             });
         EXPECT_TRUE(supported) << "object " << item.label << " floats at z = " << z;
       }
-      EXPECT_EQ(stacked, preset == "stacked_occluded" ? 4 : 0);
+      // The classic presets stack exactly these; the hard cases are checked in hard_case_test.
+      if (range.min == range.max) {
+        EXPECT_EQ(stacked, preset == "stacked_occluded" ? 4 : 0);
+      }
     }
   }
 }
