@@ -167,13 +167,13 @@ Group flat_with_items(const Solid& flat, int items, RandomStream& random) {
                                         random.uniform(-1.0, 1.0) * flat.half_size[1], 0.0);
       const Solid solid =
           item_for(room, flat.centre[0] + offset[0], flat.centre[1] + offset[1], top_z, random);
-      if (!centre && !rests_inside(flat, solid)) continue;
+      if (!rests_inside(flat, solid)) continue;
+      // 1 cm between the items' extents, so that none touches or overlaps another.
       const double radius = footprint_radius(solid);
       const bool apart = std::all_of(standing.begin(), standing.end(), [&](const Standing& s) {
         return std::hypot(solid.centre[0] - s.x, solid.centre[1] - s.y) >= radius + s.radius + 0.01;
       });
       if (!apart) continue;
-      if (centre && !rests_inside(flat, solid)) continue;
       standing.push_back({solid.centre[0], solid.centre[1], radius});
       group.add(solid, radius);
       placed = true;
