@@ -18,7 +18,7 @@ shift $(($# < 3 ? $# : 3))
 [[ "${1:-}" == "--" ]] && shift
 tabletop_args=("$@")
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-facet="$here/build/bin/facet"
+facet="${FACET:-$here/build/bin/facet}"
 
 summary() {  # the ALL row of score.py: P R F seg over under merged
   awk '/^ALL/ {printf "%s | %s | **%.3f** | %s | %s | %s | %s", $5, $6, $7 / 100, $8, $11, $12, $13}'

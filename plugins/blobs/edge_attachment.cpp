@@ -8,31 +8,24 @@
 namespace facet::blobs {
 namespace {
 
-bool close(const float* a, const float* b, float max_squared_m2) {
-  const float dx = a[0] - b[0];
-  const float dy = a[1] - b[1];
-  const float dz = a[2] - b[2];
-  return dx * dx + dy * dy + dz * dz < max_squared_m2;
-}
-
 // Marks the pixels of an edge-only region too small to keep, until the end of the pass.
 constexpr std::int32_t kTooSmall = -1;
 
 class EdgeGrid {
  public:
-  EdgeGrid(cv::Mat& labels, const cv::Mat& edges, const cv::Mat& xyz, float max_distance_m)
+  EdgeGrid(cv::Mat& labels, const cv::Mat& edges, const cv::Mat& xyz, const NeighbourGate& gate)
       : rows_(edges.rows),
         cols_(edges.cols),
         label_(labels.ptr<std::int32_t>()),
         edge_(edges.ptr<std::uint8_t>()),
         point_(xyz.ptr<float>()),
-        max_squared_(max_distance_m * max_distance_m) {}
+        gate_(gate) {}
 
   std::int32_t* label() { return label_; }
   bool is_edge(int i) const { return edge_[i] != 0; }
   bool linked(int a, int b) const {
-    return close(point_ + 3 * static_cast<std::ptrdiff_t>(a),
-                 point_ + 3 * static_cast<std::ptrdiff_t>(b), max_squared_);
+    return gate_.close(point_ + 3 * static_cast<std::ptrdiff_t>(a),
+                       point_ + 3 * static_cast<std::ptrdiff_t>(b));
   }
   // Calls visit(n) for each 8-neighbour n of pixel i, in raster order, until visit returns true.
   template <class Visit>
@@ -70,7 +63,7 @@ class EdgeGrid {
   std::int32_t* label_;
   const std::uint8_t* edge_;
   const float* point_;
-  float max_squared_;
+  NeighbourGate gate_;
 };
 
 // Ids back in raster order of each blob's first pixel (attached edge pixels may come before a
@@ -103,8 +96,8 @@ void restore_raster_order(EuclideanRegions& blobs) {
 
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
-                                  float max_distance_m, std::int64_t min_size_px) {
-  EdgeGrid grid(blobs.labels, edges, xyz, max_distance_m);
+                                  const NeighbourGate& gate, std::int64_t min_size_px) {
+  EdgeGrid grid(blobs.labels, edges, xyz, gate);
   std::int32_t* label = grid.label();
   EdgeAttachment result;
   bool reordered = false;

@@ -41,21 +41,13 @@ class PixelSets {
   std::vector<std::int32_t> parent_;
 };
 
-bool close(const float* a, const float* b, float max_squared_m2) {
-  const float dx = a[0] - b[0];
-  const float dy = a[1] - b[1];
-  const float dz = a[2] - b[2];
-  return dx * dx + dy * dy + dz * dz < max_squared_m2;
-}
-
 }  // namespace
 
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
-                                        float max_distance_m, std::int64_t min_size_px) {
+                                        const NeighbourGate& gate, std::int64_t min_size_px) {
   const int rows = mask.rows;
   const int cols = mask.cols;
   const std::size_t total = mask.total();
-  const float max_squared = max_distance_m * max_distance_m;
   const auto* point = xyz.ptr<float>();
   PixelSets sets(total);
 
@@ -74,14 +66,14 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
       const std::size_t i = static_cast<std::size_t>(row) * cols + col;
       sets.make(i);
       const float* p = point + 3 * i;
-      if (col > 0 && in[col - 1] != 0 && close(p, p - 3, max_squared)) sets.join(i, i - 1);
+      if (col > 0 && in[col - 1] != 0 && gate.close(p, p - 3)) sets.join(i, i - 1);
       if (above == nullptr) continue;
       const std::size_t up = i - static_cast<std::size_t>(cols);
       for (int dc = -1; dc <= 1; ++dc) {
         const int c = col + dc;
         if (c < 0 || c >= cols || above[c] == 0) continue;
         const std::size_t j = up + static_cast<std::size_t>(c - col);
-        if (close(p, point + 3 * j, max_squared)) sets.join(i, j);
+        if (gate.close(p, point + 3 * j)) sets.join(i, j);
       }
     }
   }

@@ -6,6 +6,8 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "blobs/neighbour_gate.hpp"
+
 namespace facet::blobs {
 
 struct EuclideanRegions {
@@ -17,8 +19,9 @@ struct EuclideanRegions {
 };
 
 // mask: CV_8UC1, non-zero = pixel takes part (it must have a finite point). xyz: CV_32FC3,
-// continuous, same size. Regions under min_size_px are left at 0.
+// continuous, same size. Neighbours join when the gate finds them close. Regions under
+// min_size_px are left at 0.
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
-                                        float max_distance_m, std::int64_t min_size_px);
+                                        const NeighbourGate& gate, std::int64_t min_size_px);
 
 }  // namespace facet::blobs

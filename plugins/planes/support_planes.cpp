@@ -257,11 +257,16 @@ StageSpec SupportPlaneStage::spec() {
              "within up_prior_max_deg of the camera's up (-y); or a vector 'x,y,z' (camera "
              "frame: x right, y down, z forward), e.g. '0,-1,0' for a level camera.",
              {.origin = "ALGORITHM.md: from a parameter or the dominant horizontal plane"})
-      .param("up_prior_max_deg", 60.0,
+      .param("up_prior_max_deg", 80.0,
              "auto up: the dominant horizontal plane is the largest candidate whose normal is "
              "within this angle of the camera's -y axis (a camera looking down at a table at "
-             "up to this pitch). With a given up, horizontal_max_deg is used instead.",
-             {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "measured: mOSD tables 25-50 deg"})
+             "up to this pitch). A wall facing a camera pitched down lies more than 90 deg from "
+             "it. With a given up, horizontal_max_deg is used instead.",
+             {.unit = "deg",
+              .min = 0.0,
+              .max = 90.0,
+              .origin = "mOSD tables 25-50 deg; generated views pitched down 30-70 deg (60 lost "
+                        "the table of every view pitched more steeply, docs/evaluation.md)"})
       .param("min_segment_px", 20,
              "N_seg: patches left with fewer points than this are dropped (set to 0).",
              {.unit = "px", .min = 0.0, .max = 1.0e6, .origin = "paper: N_seg = 5 at 320x240, x4"})
