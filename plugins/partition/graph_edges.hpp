@@ -45,6 +45,8 @@ struct CoplanarRule {
   double min_front_share = 0.8;   // least share of occluding pixels among the valid gap pixels
   std::int32_t min_gap_px = 3;    // fewer valid gap pixels: no evidence, not joined
   std::int32_t lines = 3;         // image lines sampled between the two patches
+  std::int32_t max_partners = 4;  // image lines only to each patch's nearest candidates
+  bool across_blobs_only = true;  // pairs within one blob are the convex feature's
 };
 
 // Per node, the nodes whose patches touch its patch in the image (grow.surfaces' adjacency),

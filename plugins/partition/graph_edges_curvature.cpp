@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
+#include "partition/graph_candidates.hpp"
 #include "partition/graph_edges.hpp"
 #include "partition/graph_gap.hpp"
 
@@ -122,30 +124,39 @@ void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
     const GraphNode& node = graph.nodes[i];
     if (node.segment >= 0 && !node.planar) curved.push_back(static_cast<std::int32_t>(i));
   }
-  Samples samples;
+  std::vector<CandidatePair> candidates;
   for (std::size_t x = 0; x < curved.size(); ++x) {
     const GraphNode& a = graph.nodes[static_cast<std::size_t>(curved[x])];
-    bool sampled = false;
     for (std::size_t y = x + 1; y < curved.size(); ++y) {
       const GraphNode& b = graph.nodes[static_cast<std::size_t>(curved[y])];
       const double gap_m = box_gap_m(a.bounds, b.bounds);
-      if (gap_m > std::max(rule.max_gap_m, rule.max_occluded_gap_m)) continue;
-      if (gap_m > rule.max_gap_m &&
-          !is_occluded(look_between(a, b, images, plane_between(a.plane, b.plane),
-                                    occlusion.front_margin_m, occlusion.lines),
-                       occlusion.min_gap_px, occlusion.min_front_share)) {
-        continue;
+      if (gap_m <= std::max(rule.max_gap_m, rule.max_occluded_gap_m)) {
+        candidates.push_back({curved[x], curved[y], gap_m});
       }
-      if (!sampled) {
-        take_samples(points, points.segments[static_cast<std::size_t>(a.segment)], rule.max_samples,
-                     samples.a);
-        sampled = true;
-      }
-      take_samples(points, points.segments[static_cast<std::size_t>(b.segment)], rule.max_samples,
-                   samples.b);
-      if (one_elliptic_quadric(samples, rule)) {
-        edges.push_back({curved[x], curved[y], EdgeFeature::curvature});
-      }
+    }
+  }
+  Samples samples;
+  std::int32_t sampled = -1;  // the node whose points samples.a holds
+  for (const CandidatePair& pair :
+       nearest_pairs(std::move(candidates), static_cast<std::int32_t>(graph.nodes.size()),
+                     occlusion.max_partners)) {
+    const GraphNode& a = graph.nodes[static_cast<std::size_t>(pair.a)];
+    const GraphNode& b = graph.nodes[static_cast<std::size_t>(pair.b)];
+    if (pair.gap_m > rule.max_gap_m &&
+        !is_occluded(look_between(a, b, images, plane_between(a.plane, b.plane),
+                                  occlusion.front_margin_m, occlusion.lines),
+                     occlusion.min_gap_px, occlusion.min_front_share)) {
+      continue;
+    }
+    if (sampled != pair.a) {
+      take_samples(points, points.segments[static_cast<std::size_t>(a.segment)], rule.max_samples,
+                   samples.a);
+      sampled = pair.a;
+    }
+    take_samples(points, points.segments[static_cast<std::size_t>(b.segment)], rule.max_samples,
+                 samples.b);
+    if (one_elliptic_quadric(samples, rule)) {
+      edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
     }
   }
 }

@@ -88,6 +88,17 @@ StageSpec PartitionGraph::spec() {
       .param("coplanar_lines", 3,
              "Image lines sampled between two patches (through their mean pixels and beside).",
              {.min = 1.0, .max = 64.0})
+      .param("coplanar_across_blobs_only", true,
+             "Only pairs of patches in different blobs: an occluder in front separates the two "
+             "pieces in 3D, while two coplanar patches of one blob are joined through other "
+             "surfaces (boxes of equal height in a row, with a taller one between them, are not "
+             "one box).",
+             {.origin = "measured on mOSD learn frames and the partition benchmark scenes"})
+      .param("max_partners", 4,
+             "The image lines (coplanar, and curvature beyond curvature_max_gap_m) and quadric "
+             "fits are made only for each patch's nearest candidates (by 3D gap), so that the "
+             "cost grows with the number of patches, not its square.",
+             {.min = 1.0, .max = 1.0e6})
       .param("curvature", true,
              "Join two curved patches, close or with an occluder between, that one elliptic "
              "quadric fits.",
@@ -143,7 +154,9 @@ PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(params.get_bo
                          params.get_double("coplanar_front_margin_m"),
                          params.get_double("coplanar_min_front_share"),
                          static_cast<std::int32_t>(params.get_int("coplanar_min_gap_px")),
-                         static_cast<std::int32_t>(params.get_int("coplanar_lines"))};
+                         static_cast<std::int32_t>(params.get_int("coplanar_lines")),
+                         static_cast<std::int32_t>(params.get_int("max_partners")),
+                         params.get_bool("coplanar_across_blobs_only")};
   rule_.curvature = params.get_bool("curvature");
   rule_.curvature_rule = {params.get_double("curvature_tolerance_m"),
                           params.get_double("curvature_min_share"),
