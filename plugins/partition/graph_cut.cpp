@@ -74,7 +74,6 @@ void GraphCut::split(std::vector<std::int32_t> members, const CutRule& rule) {
   std::vector<char> side;
   if (rule.enabled && size >= 4 && size <= rule.max_nodes &&
       minimum_cut(members, side) < rule.max_cost) {
-    ++cuts_;
     // Each side of a minimum cut is connected (else a cheaper cut would exist); the two are
     // split in turn, with degrees recounted within each.
     std::vector<std::int32_t> first;
@@ -82,13 +81,31 @@ void GraphCut::split(std::vector<std::int32_t> members, const CutRule& rule) {
     for (std::size_t k = 0; k < members.size(); ++k) {
       (side[k] != 0 ? first : second).push_back(members[k]);
     }
-    split(std::move(first), rule);
-    split(std::move(second), rule);
-    return;
+    if (!rule.needs_cycles || (has_cycle(first) && has_cycle(second))) {
+      ++cuts_;
+      split(std::move(first), rule);
+      split(std::move(second), rule);
+      return;
+    }
   }
   for (const std::int32_t node : members)
     group_[static_cast<std::size_t>(node)] = next_group_;
   ++next_group_;
+}
+
+bool GraphCut::has_cycle(const std::vector<std::int32_t>& members) {
+  for (std::size_t k = 0; k < members.size(); ++k)
+    local_[static_cast<std::size_t>(members[k])] = static_cast<std::int32_t>(k);
+  std::size_t edge_ends = 0;
+  for (const std::int32_t node : members) {
+    for (const std::int32_t j : neighbours_[static_cast<std::size_t>(node)]) {
+      if (local_[static_cast<std::size_t>(j)] >= 0) ++edge_ends;
+    }
+  }
+  for (const std::int32_t node : members)
+    local_[static_cast<std::size_t>(node)] = -1;
+  // A connected graph with as many edges as nodes is not a tree.
+  return edge_ends / 2 >= members.size();
 }
 
 double GraphCut::minimum_cut(const std::vector<std::int32_t>& members, std::vector<char>& side) {

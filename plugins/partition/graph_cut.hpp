@@ -20,6 +20,11 @@ struct CutRule {
   // Groups with more nodes are not cut (the cut is cubic in a group's size); a guard against
   // pathological input, far above a real object's patches.
   std::int32_t max_nodes = 120;
+  // Cut only between dense groups: each side must hold a cycle (as many edges as nodes), e.g.
+  // the three mutually convex faces of a box. A tree (a box's top joined to two front pieces
+  // seen on both sides of an occluder) has bridges of cost under ½ but no dense group to
+  // separate.
+  bool needs_cycles = true;
 };
 
 class GraphCut {
@@ -36,6 +41,8 @@ class GraphCut {
   // Stoer-Wagner minimum cut of the induced subgraph on `members`; returns the cut's cost and
   // marks one side in `side` (indices into members).
   double minimum_cut(const std::vector<std::int32_t>& members, std::vector<char>& side);
+  // Whether the subgraph induced by `members` (connected) has a cycle.
+  bool has_cycle(const std::vector<std::int32_t>& members);
   std::int32_t find(std::int32_t i);
 
   std::vector<std::int32_t> parent_;

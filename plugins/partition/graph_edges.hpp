@@ -29,6 +29,7 @@ struct GraphEdge {
 struct FrameImages {
   const cv::Mat* patches = nullptr;  // CV_32SC1, continuous
   const cv::Mat* points = nullptr;   // CV_32FC3, continuous
+  const cv::Mat* blobs = nullptr;    // CV_32SC1, continuous
 };
 
 // convex ("cutfree"): adjacent patches of one blob whose junction is convex (is_convex_junction,
@@ -38,15 +39,15 @@ void add_convex_edges(const BlobSegments& points, const GraphNodes& graph,
                       std::vector<std::int32_t>& node_of_patch, std::vector<GraphEdge>& edges);
 
 struct CoplanarRule {
-  double max_angle_deg = 15.0;    // normals of the two planes at most this far apart
-  double max_distance_m = 0.015;  // each centre at most this far from the other's plane
-  double max_gap_m = 0.25;        // 3D boxes of the two patches at most this far apart
-  double front_margin_m = 0.01;   // a gap pixel this much in front of the plane occludes it
-  double min_front_share = 0.8;   // least share of occluding pixels among the valid gap pixels
-  std::int32_t min_gap_px = 3;    // fewer valid gap pixels: no evidence, not joined
-  std::int32_t lines = 3;         // image lines sampled between the two patches
-  std::int32_t max_partners = 4;  // image lines only to each patch's nearest candidates
-  bool across_blobs_only = true;  // pairs within one blob are the convex feature's
+  double max_angle_deg = 15.0;     // normals of the two planes at most this far apart
+  double max_distance_m = 0.015;   // each centre at most this far from the other's plane
+  double max_gap_m = 0.25;         // 3D boxes of the two patches at most this far apart
+  double front_margin_m = 0.01;    // a gap pixel this much in front of the plane occludes it
+  double min_front_share = 0.8;    // least share of occluding pixels among the valid gap pixels
+  std::int32_t min_gap_px = 3;     // fewer valid gap pixels: no evidence, not joined
+  std::int32_t lines = 3;          // image lines sampled between the two patches
+  std::int32_t max_partners = 4;   // image lines only to each patch's nearest candidates
+  bool across_blobs_only = false;  // only pairs of patches in different blobs
 };
 
 // Per node, the nodes whose patches touch its patch in the image (grow.surfaces' adjacency),

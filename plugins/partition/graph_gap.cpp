@@ -46,6 +46,7 @@ GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImag
   const int height = patches.rows;
   const auto* patch_at = patches.ptr<std::int32_t>();
   const auto* point_at = points.ptr<cv::Vec3f>();
+  const auto* blob_at = images.blobs->ptr<std::int32_t>();
   const double du = b.centre_u_px - a.centre_u_px;
   const double dv = b.centre_v_px - a.centre_v_px;
   const double length = std::hypot(du, dv);
@@ -90,7 +91,8 @@ GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImag
       }
       const double distance = surface.normal[0] * p[0] + surface.normal[1] * p[1] +
                               surface.normal[2] * p[2] + surface.offset_m;
-      if (distance > front_margin_m) {
+      const std::int32_t blob = blob_at[v * width + u];
+      if (distance > front_margin_m && blob != a.blob && blob != b.blob) {
         ++evidence.front_px;
       } else {
         ++evidence.other_px;

@@ -28,8 +28,8 @@ bool is_occluded(const GapEvidence& gap, std::int32_t min_gap_px, double min_fro
 // Samples `lines` image lines from patch a to patch b: the one through both mean pixels and
 // lines beside it, spread over the narrower patch's width across the line. On each line the gap
 // is the stretch after the last pixel of a and before the first pixel of b; each gap pixel's 3D
-// point is classified against `surface` (front: signed distance > front_margin_m). Cost: the
-// lines' lengths in pixels.
+// point is classified against `surface` (front: signed distance > front_margin_m) and by its
+// blob. Cost: the lines' lengths in pixels.
 GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImages& images,
                          const FittedPlane& surface, double front_margin_m, std::int32_t lines);
 

@@ -133,6 +133,61 @@ TEST(PartitionGraph, CoplanarBoxesWithTheTableBetweenThemStayApart) {
   EXPECT_EQ(joined.count, 1);
 }
 
+TEST(PartitionGraph, OccludedFrontBelowAVisibleTopIsOneObject) {
+  // A box in front, a little taller, hides the middle of a wide box's front; the wide box's top,
+  // seen above it, keeps both pieces in one blob. The top is left in no patch (on real frames it
+  // often breaks into small pieces), so only the coplanar feature can join the two pieces.
+  Tabletop t;
+  t.box(0.0, 0.10, {0.14, 0.04, 0.08}).box(0.0, 0.0, {0.05, 0.04, 0.09});
+  const TableScene s = on_table(t);
+  PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 2);
+  // The wide box's patches: its top (highest in the image) and the two pieces of its front.
+  std::map<std::int32_t, std::pair<double, int>> rows;  // patch -> (sum of v, pixels)
+  for (int v = 0; v < input.patches.labels.rows; ++v) {
+    for (int u = 0; u < input.patches.labels.cols; ++u) {
+      const std::int32_t patch = input.patches.labels.at<std::int32_t>(v, u);
+      if (s.scene.object.at<std::int32_t>(v, u) != 1 || patch == 0) continue;
+      rows[patch].first += v;
+      ++rows[patch].second;
+    }
+  }
+  ASSERT_EQ(rows.size(), 3U);
+  std::int32_t top = 0;
+  double top_v = 1e9;
+  for (const auto& [patch, sum] : rows) {
+    if (sum.first / sum.second < top_v) {
+      top_v = sum.first / sum.second;
+      top = patch;
+    }
+  }
+  input.patches.labels.setTo(0, input.patches.labels == top);
+  input.adjacency = contacts_of(input.patches.labels);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
+  EXPECT_EQ(metric_value(metrics, "coplanar_edges"), 1.0);
+  EXPECT_EQ(run_graph(input, {{"coplanar_across_blobs_only", true}}).count, 3);
+}
+
+TEST(PartitionGraph, EqualBoxesBesideATallerOneAreThreeObjects) {
+  // Two boxes of equal height touching a taller box between them: their tops and fronts are
+  // coplanar and the taller box is in front of those planes, but it touches both (one blob):
+  // a body beside them, not an occluder hiding one box.
+  Tabletop t;
+  t.box(-0.12, 0.0, {0.06, 0.05, 0.04}).box(0.0, 0.0, {0.06, 0.05, 0.08});
+  t.box(0.12, 0.0, {0.06, 0.05, 0.04});
+  const TableScene s = on_table(t);
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 3);
+  EXPECT_EQ(metric_value(metrics, "coplanar_edges"), 0.0);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+}
+
 TEST(PartitionGraph, BowlInsideAndOutsideAreOneObject) {
   const TableScene s = bowl();
   const PartitionInput input = graph_input(s.scene, s.table);
@@ -289,6 +344,20 @@ TEST(PartitionGraphCut, LeavesPathsStarsAndCliquesWhole) {
   EXPECT_EQ(group_count(cut.groups(30, edges_of(star), CutRule{})), 1);
   // A box's three faces and a fourth patch on one of them.
   EXPECT_EQ(group_count(cut.groups(4, edges_of({{0, 1}, {1, 2}, {0, 2}, {2, 3}}), CutRule{})), 1);
+}
+
+TEST(PartitionGraphCut, TreesAreNotCutUnlessAsked) {
+  // A box's top (0) on its front seen in two pieces (1, 2) around an occluder, with a small
+  // face on each piece (3, 4): the bridge 1-2 costs 1/2 (1/3 + 1/3) < 1/2, but neither side is
+  // a dense group.
+  const auto edges = edges_of({{0, 1}, {0, 2}, {1, 3}, {2, 4}, {1, 2}});
+  GraphCut cut;
+  EXPECT_EQ(group_count(cut.groups(5, edges, CutRule{})), 1);
+  const auto tree = edges_of({{0, 1}, {1, 2}, {2, 3}, {1, 4}, {2, 5}});
+  EXPECT_EQ(group_count(cut.groups(6, tree, CutRule{})), 1);
+  CutRule plain;
+  plain.needs_cycles = false;
+  EXPECT_EQ(group_count(cut.groups(6, tree, plain)), 2);  // the bridge 1-2: 1/2 (1/3 + 1/3)
 }
 
 TEST(PartitionGraphCut, DuplicateEdgesCountOnceAndIsolatedNodesAreGroups) {
