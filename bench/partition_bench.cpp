@@ -7,6 +7,7 @@
 
 #include "partition/bsp_stage.hpp"
 #include "partition/convex_stage.hpp"
+#include "partition/graph_stage.hpp"
 #include "partition_scene.hpp"
 
 namespace {
@@ -57,9 +58,19 @@ void BM_PartitionBsp(benchmark::State& state) {
 void BM_PartitionConvex(benchmark::State& state) {
   run_stage<facet::partition::PartitionConvex>(state);
 }
+void BM_PartitionGraph(benchmark::State& state) {
+  run_stage<facet::partition::PartitionGraph>(state);
+}
 
 BENCHMARK(BM_PartitionBsp)->Arg(5)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PartitionConvex)->Arg(5)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PartitionGraph)
+    ->Arg(5)
+    ->Arg(20)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(200)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 BENCHMARK_MAIN();

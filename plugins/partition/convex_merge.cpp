@@ -6,6 +6,16 @@
 
 namespace facet::partition {
 
+bool is_convex_junction(const BlobSegments& points, const Segment& a, const FittedPlane& plane_a,
+                        const Segment& b, const FittedPlane& plane_b, const ConvexRule& rule) {
+  const double max_cos = std::cos(rule.min_angle_deg * std::numbers::pi / 180.0);
+  if (normal_cosine(plane_a, plane_b) > max_cos) return false;
+  return share_not_in_front(points, plane_a, b.begin, b.end, rule.tolerance_m) >=
+             rule.min_behind_share &&
+         share_not_in_front(points, plane_b, a.begin, a.end, rule.tolerance_m) >=
+             rule.min_behind_share;
+}
+
 void PatchNeighbours::build(const PatchAdjacency& adjacency, std::int32_t max_patch) {
   std::int32_t top = std::max(max_patch, adjacency.count);
   for (const auto& [a, b] : adjacency.pairs)
@@ -45,23 +55,6 @@ std::int32_t ConvexMerger::find(std::int32_t i) {
   return i;
 }
 
-double ConvexMerger::behind_share(const BlobSegments& points, const Node& a, const Node& b) const {
-  const Segment& segment = points.segments[static_cast<std::size_t>(b.segment)];
-  const float nx = a.plane.normal[0];
-  const float ny = a.plane.normal[1];
-  const float nz = a.plane.normal[2];
-  const float d0 = a.plane.offset_m;
-  const auto tol = static_cast<float>(rule_.tolerance_m);
-  const float* x = points.x.data();
-  const float* y = points.y.data();
-  const float* z = points.z.data();
-  std::int32_t in_front = 0;
-  for (std::int32_t k = segment.begin; k < segment.end; ++k) {
-    in_front += static_cast<std::int32_t>(nx * x[k] + ny * y[k] + nz * z[k] + d0 > tol);
-  }
-  return 1.0 - static_cast<double>(in_front) / static_cast<double>(segment.size());
-}
-
 std::int32_t ConvexMerger::merge(const BlobSegments& points, const BlobRange& blob,
                                  const PatchNeighbours& neighbours, std::int32_t* labels,
                                  std::int32_t next_id) {
@@ -83,28 +76,24 @@ std::int32_t ConvexMerger::merge(const BlobSegments& points, const BlobRange& bl
   for (std::int32_t i = 0; i < n; ++i)
     parent_[static_cast<std::size_t>(i)] = i;
 
-  const double max_cos = std::cos(rule_.min_angle_deg * std::numbers::pi / 180.0);
   for (std::int32_t i = 0; i < n; ++i) {
     const Node& a = nodes_[static_cast<std::size_t>(i)];
-    const std::int32_t patch = points.segments[static_cast<std::size_t>(a.segment)].patch;
-    const std::int32_t* it = neighbours.begin(patch);
-    const std::int32_t* stop = neighbours.end(patch);
+    const Segment& segment_a = points.segments[static_cast<std::size_t>(a.segment)];
+    const std::int32_t* it = neighbours.begin(segment_a.patch);
+    const std::int32_t* stop = neighbours.end(segment_a.patch);
     for (; it != nullptr && it != stop; ++it) {
       if (static_cast<std::size_t>(*it) >= node_of_patch_.size()) continue;
       const std::int32_t j = node_of_patch_[static_cast<std::size_t>(*it)];
       if (j < 0) continue;
       const Node& b = nodes_[static_cast<std::size_t>(j)];
-      const double cos_angle = static_cast<double>(a.plane.normal[0] * b.plane.normal[0] +
-                                                   a.plane.normal[1] * b.plane.normal[1] +
-                                                   a.plane.normal[2] * b.plane.normal[2]);
-      // Nearly parallel surfaces meet at a step (one object in front of another), whichever
-      // side the points fall on.
-      if (cos_angle > max_cos) continue;
       const std::int32_t ri = find(i);
       const std::int32_t rj = find(j);
       if (ri == rj) continue;
-      if (behind_share(points, a, b) < rule_.min_behind_share) continue;
-      if (behind_share(points, b, a) < rule_.min_behind_share) continue;
+      if (!is_convex_junction(points, segment_a, a.plane,
+                              points.segments[static_cast<std::size_t>(b.segment)], b.plane,
+                              rule_)) {
+        continue;
+      }
       parent_[static_cast<std::size_t>(std::max(ri, rj))] = std::min(ri, rj);
       ++merges_;
     }

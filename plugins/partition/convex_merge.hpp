@@ -19,6 +19,13 @@ struct ConvexRule {
   std::int32_t min_patch_px = 100;  // smaller patches take part only as leftover pixels
 };
 
+// The convex-junction test of two patches with fitted planes: normals at least min_angle_deg
+// apart (closer normals meet at a step, one surface in front of another, whichever side the
+// points fall on), and each patch has at least min_behind_share of its points not more than
+// tolerance_m in front of the other's plane.
+bool is_convex_junction(const BlobSegments& points, const Segment& a, const FittedPlane& plane_a,
+                        const Segment& b, const FittedPlane& plane_b, const ConvexRule& rule);
+
 // Which patches touch, as per-patch neighbour lists (CSR), built once per frame.
 class PatchNeighbours {
  public:
@@ -49,8 +56,6 @@ class ConvexMerger {
     std::int32_t segment = 0;
     FittedPlane plane;
   };
-  // Share of node b's points not more than tolerance in front of node a's plane.
-  double behind_share(const BlobSegments& points, const Node& a, const Node& b) const;
   std::int32_t find(std::int32_t i);
 
   ConvexRule rule_;

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 
 namespace facet::partition {
 
@@ -74,6 +75,41 @@ Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t en
     box.add(points.x[k], points.y[k], points.z[k]);
   }
   return box;
+}
+
+double share_not_in_front(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
+                          std::int32_t end, double tolerance_m) {
+  if (end <= begin) return 1.0;
+  const float nx = plane.normal[0];
+  const float ny = plane.normal[1];
+  const float nz = plane.normal[2];
+  const float d0 = plane.offset_m;
+  const auto tol = static_cast<float>(tolerance_m);
+  const float* x = points.x.data();
+  const float* y = points.y.data();
+  const float* z = points.z.data();
+  std::int32_t in_front = 0;
+  for (std::int32_t k = begin; k < end; ++k) {
+    in_front += static_cast<std::int32_t>(nx * x[k] + ny * y[k] + nz * z[k] + d0 > tol);
+  }
+  return 1.0 - static_cast<double>(in_front) / static_cast<double>(end - begin);
+}
+
+double plane_rms_m(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
+                   std::int32_t end) {
+  if (end <= begin) return 0.0;
+  double sum = 0.0;
+  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
+    const double d = plane.normal[0] * points.x[k] + plane.normal[1] * points.y[k] +
+                     plane.normal[2] * points.z[k] + plane.offset_m;
+    sum += d * d;
+  }
+  return std::sqrt(sum / static_cast<double>(end - begin));
+}
+
+double normal_cosine(const FittedPlane& a, const FittedPlane& b) {
+  return static_cast<double>(a.normal[0] * b.normal[0] + a.normal[1] * b.normal[1] +
+                             a.normal[2] * b.normal[2]);
 }
 
 }  // namespace facet::partition

@@ -31,4 +31,16 @@ FittedPlane fit_plane(const BlobSegments& points, std::int32_t begin, std::int32
 
 Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t end);
 
+// Share of the points [begin, end) that are not more than tolerance_m in front of `plane`
+// (1 for an empty range).
+double share_not_in_front(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
+                          std::int32_t end, double tolerance_m);
+
+// Root mean square distance of the points [begin, end) to `plane`, metres (0 for an empty range).
+double plane_rms_m(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
+                   std::int32_t end);
+
+// Cosine of the angle between two planes' normals.
+double normal_cosine(const FittedPlane& a, const FittedPlane& b);
+
 }  // namespace facet::partition

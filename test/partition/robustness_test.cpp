@@ -1,10 +1,11 @@
-// Both partition stages on degenerate and extreme input: no crash, sensible output.
+// The partition stages on degenerate and extreme input: no crash, sensible output.
 
 #include <gtest/gtest.h>
 
 #include "facet/error.hpp"
 #include "partition/bsp_stage.hpp"
 #include "partition/convex_stage.hpp"
+#include "partition/graph_stage.hpp"
 #include "test_scenes.hpp"
 
 namespace facet::test {
@@ -13,7 +14,8 @@ namespace {
 template <class Stage>
 class PartitionRobustness : public ::testing::Test {};
 
-using Stages = ::testing::Types<partition::PartitionBsp, partition::PartitionConvex>;
+using Stages = ::testing::Types<partition::PartitionBsp, partition::PartitionConvex,
+                                partition::PartitionGraph>;
 TYPED_TEST_SUITE(PartitionRobustness, Stages);
 
 TYPED_TEST(PartitionRobustness, EmptyImagesGiveAnEmptyResult) {

@@ -1,9 +1,10 @@
-// Both partition stages on simple tabletop scenes where every object is in one blob.
+// The partition stages on simple tabletop scenes where every object is in one blob.
 
 #include <gtest/gtest.h>
 
 #include "partition/bsp_stage.hpp"
 #include "partition/convex_stage.hpp"
+#include "partition/graph_stage.hpp"
 #include "test_scenes.hpp"
 
 namespace facet::test {
@@ -12,7 +13,8 @@ namespace {
 template <class Stage>
 class PartitionShapes : public ::testing::Test {};
 
-using Stages = ::testing::Types<partition::PartitionBsp, partition::PartitionConvex>;
+using Stages = ::testing::Types<partition::PartitionBsp, partition::PartitionConvex,
+                                partition::PartitionGraph>;
 TYPED_TEST_SUITE(PartitionShapes, Stages);
 
 TYPED_TEST(PartitionShapes, TwoTouchingBoxesAreTwoObjects) {

@@ -1,0 +1,56 @@
+#pragma once
+// The graph cut of partition.graph: connected groups of patches are objects, except that a weak
+// bridge between two densely connected groups is cut.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "partition/graph_edges.hpp"
+
+namespace facet::partition {
+
+struct CutRule {
+  bool enabled = true;
+  // A group is split along its cheapest cut while that cut costs less than this. An edge (i, j)
+  // costs ½(1/deg_i + 1/deg_j), degrees counted within the group: a lone edge costs 1, an edge
+  // of a node with one neighbour at least ½, so only bridges between groups of two or more
+  // mutually joined patches are ever cut.
+  double max_cost = 0.5;
+  // Groups with more nodes are not cut (the cut is cubic in a group's size); a guard against
+  // pathological input, far above a real object's patches.
+  std::int32_t max_nodes = 120;
+  // Cut only between dense groups: each side must hold a cycle (as many edges as nodes), e.g.
+  // the three mutually convex faces of a box. A tree (a box's top joined to two front pieces
+  // seen on both sides of an occluder) has bridges of cost under ½ but no dense group to
+  // separate.
+  bool needs_cycles = true;
+};
+
+class GraphCut {
+ public:
+  // Group of every node (0, 1, ... in order of each group's first node). Duplicate edges (two
+  // features on one pair) count once.
+  const std::vector<std::int32_t>& groups(std::int32_t node_count, std::span<const GraphEdge> edges,
+                                          const CutRule& rule);
+  std::int64_t cuts() const { return cuts_; }
+
+ private:
+  // Splits `members` (a connected set) by its minimum cut while the cut is cheap enough.
+  void split(std::vector<std::int32_t> members, const CutRule& rule);
+  // Stoer-Wagner minimum cut of the induced subgraph on `members`; returns the cut's cost and
+  // marks one side in `side` (indices into members).
+  double minimum_cut(const std::vector<std::int32_t>& members, std::vector<char>& side);
+  // Whether the subgraph induced by `members` (connected) has a cycle.
+  bool has_cycle(const std::vector<std::int32_t>& members);
+  std::int32_t find(std::int32_t i);
+
+  std::vector<std::int32_t> parent_;
+  std::vector<std::vector<std::int32_t>> neighbours_;
+  std::vector<std::int32_t> group_;
+  std::vector<std::int32_t> local_;  // node -> index in the current members, -1 outside
+  std::int32_t next_group_ = 0;
+  std::int64_t cuts_ = 0;
+};
+
+}  // namespace facet::partition

@@ -1,0 +1,254 @@
+#include "partition/graph_stage.hpp"
+
+#include <utility>
+
+#include "facet/types/images.hpp"
+#include "facet/types/patches.hpp"
+#include "partition/object_labels.hpp"
+#include "partition/patch_graph.hpp"
+
+namespace facet::partition {
+
+StageSpec PartitionGraph::spec() {
+  return StageSpec(
+             "partition.graph",
+             "Objects as groups of a graph of surface patches (the authors' later algorithm).\n"
+             "Nodes: every patch of a blob with at least min_patch_px points and a plane "
+             "(least squares, normal towards the camera); planar when its points are within "
+             "planar_max_rms_m (RMS) of the plane, else curved. A blob with no such patch is a "
+             "node of its own. Edges, each feature switched by its bool: convex = adjacent "
+             "patches of one blob at a convex junction (partition.convex's test: normals at "
+             "least convex_min_angle_deg apart, each patch with convex_min_behind_share of its "
+             "points not more than convex_tolerance_m in front of the other's plane); coplanar = "
+             "two planar patches that do not touch, normals within coplanar_max_angle_deg, each "
+             "centre within coplanar_max_distance_m of the other's plane, 3D boxes within "
+             "coplanar_max_gap_m, whose gap in the image (coplanar_lines lines from one patch to "
+             "the other) is occluded: at least coplanar_min_gap_px gap pixels with a point, and "
+             "at least coplanar_min_front_share of them more than coplanar_front_margin_m in "
+             "front of the common plane and of a blob other than the two patches' (a body "
+             "touching them is no occluder; pixels without a point count as neither); the two "
+             "patches may be in different blobs, so an object may span blobs. curvature = two "
+             "curved patches (any blobs) whose 3D boxes are within curvature_max_gap_m, or "
+             "within curvature_max_occluded_gap_m with an occluded gap (as above), that one "
+             "elliptic quadric fits (curvature_min_share of each within curvature_tolerance_m). "
+             "Cut: while a group's "
+             "minimum cut, each edge (i, j) costing 1/2 (1/deg_i + 1/deg_j), costs less than "
+             "max_cut_cost and (cut_needs_cycles) each side holds a cycle, the group is split "
+             "along it (weak bridges between densely joined groups). Groups are objects; the other "
+             "pixels of a blob (in no node, no point) "
+             "join the object they are fewest pixel steps from within the blob. Object ids "
+             "follow the raster order of each object's first pixel.")
+      .input<LabelImage>("blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background.")
+      .input<LabelImage>("patches", "Surface patch ids, CV_32SC1; 0 = in no patch.")
+      .input<PatchAdjacency>("adjacency", "Which patches touch (from grow.surfaces).")
+      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
+      .output<LabelImage>("objects", "Object ids 1..count, CV_32SC1; 0 = background.")
+      .output<PatchGraph>("graph",
+                          "The graph for a person to look at (nodes, edges and the feature of "
+                          "each, object of each node), e.g. for io.patch_graph; only with "
+                          "emit_graph, else empty.")
+      .param("min_patch_px", 100,
+             "Smaller patches have no reliable plane; they join an object as leftover pixels. "
+             "A pixel count: it scales with the image area.",
+             {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"})
+      .param("planar_max_rms_m", 0.003,
+             "A patch whose points are within this RMS distance of its plane is planar (the "
+             "coplanar feature), else curved (the curvature feature). About twice the depth "
+             "noise of a Kinect at 1 m after filter.median.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("convex", true, "Join adjacent patches at convex junctions.",
+             {.origin = "authors' later code (cutfree)"})
+      .param("convex_tolerance_m", 0.01,
+             "Points closer than this to the other patch's plane count as behind it.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "partition.convex"})
+      .param("convex_min_behind_share", 0.9,
+             "Least share of each patch's points not in front of the other's plane.",
+             {.min = 0.0, .max = 1.0, .origin = "partition.convex"})
+      .param("convex_min_angle_deg", 30.0,
+             "Patches whose normals differ by less meet at a step, never a convex edge.",
+             {.unit = "deg", .min = 0.0, .max = 180.0, .origin = "authors' later code (30 deg)"})
+      .param("coplanar", true,
+             "Join two planar patches on one plane whose gap in the image an occluder hides.",
+             {.origin = "authors' later code (coplanarity)"})
+      .param("coplanar_max_angle_deg", 15.0, "Most angle between the two patches' normals.",
+             {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "measured on mOSD learn frames"})
+      .param("coplanar_max_distance_m", 0.015,
+             "Most distance of each patch's centre from the other's plane.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("coplanar_max_gap_m", 0.25,
+             "Most distance between the patches' 3D bounding boxes: the widest occluder.",
+             {.unit = "m", .min = 0.0, .max = 100.0, .origin = "table-top objects"})
+      .param("coplanar_front_margin_m", 0.01,
+             "A gap pixel occludes the plane when its point is more than this in front of it.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "grow.blobs' Delta_blob (10 mm)"})
+      .param("coplanar_min_front_share", 0.8,
+             "Least share of the gap pixels with a point that occlude the plane.",
+             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("coplanar_min_gap_px", 3,
+             "Fewer gap pixels with a point are no evidence of an occluder: not joined.",
+             {.unit = "px", .min = 0.0, .max = 1.0e6})
+      .param("coplanar_lines", 3,
+             "Image lines sampled between two patches (through their mean pixels and beside).",
+             {.min = 1.0, .max = 64.0})
+      .param("coplanar_across_blobs_only", false,
+             "Only pairs of patches in different blobs. Off: two pieces of one blob are joined "
+             "too (a box's front seen on both sides of a box in front of it, its top above "
+             "joining the pieces into one blob); an occluder must be of another blob either "
+             "way.",
+             {.origin = "measured on mOSD learn frames: off 0.976, on 0.974 (whole objects)"})
+      .param("max_partners", 4,
+             "The image lines (coplanar, and curvature beyond curvature_max_gap_m) and quadric "
+             "fits are made only for each patch's nearest candidates (by 3D gap), so that the "
+             "cost grows with the number of patches, not its square.",
+             {.min = 1.0, .max = 1.0e6})
+      .param("curvature", true,
+             "Join two curved patches, close or with an occluder between, that one elliptic "
+             "quadric fits.",
+             {.origin = "own design, after the authors' curvature feature"})
+      .param("curvature_tolerance_m", 0.005,
+             "A point within this (first-order distance) of the joint quadric fits it; covers "
+             "the wall of a cup or bowl between its inside and outside.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("curvature_min_share", 0.8, "Least share of each patch's points that fit.",
+             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
+      .param("curvature_min_axis_ratio", 0.1,
+             "The quadric's weaker bending direction must be at least this share of the "
+             "stronger (elliptic, not two planes).",
+             {.min = 0.0, .max = 1.0})
+      .param("curvature_samples", 256, "Points per patch used for the quadric fit.",
+             {.min = 10.0, .max = 1.0e6})
+      .param("curvature_max_gap_m", 0.02,
+             "Curved patches whose 3D boxes are this close are tested as they are (the inside "
+             "and outside of a bowl are often two blobs, split by the depth step at the rim).",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "about twice grow.blobs' 10 mm"})
+      .param("curvature_max_occluded_gap_m", 0.15,
+             "Curved patches further apart, up to this, are tested only when the coplanar "
+             "feature's occlusion test (its margin, share and lines, against the chord plane "
+             "of the two) says an occluder hides the gap: one can seen on both sides of a "
+             "bottle.",
+             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "table-top objects"})
+      .param("cut", true, "Cut weak bridges between densely joined groups.",
+             {.origin = "authors' later code"})
+      .param("max_cut_cost", 0.5,
+             "A group is split while its minimum cut costs less; an edge (i, j) costs "
+             "1/2 (1/deg_i + 1/deg_j).",
+             {.min = 0.0, .max = 1.0e6, .origin = "authors' later code (0.5)"})
+      .param("cut_needs_cycles", true,
+             "Cut only between dense groups: each side must hold a cycle (e.g. the three "
+             "mutually convex faces of a box). The degree cost alone cuts every bridge of a "
+             "tree between nodes of two or more neighbours, e.g. a box's top joined to both "
+             "pieces of its occluded front.",
+             {.origin = "measured on mOSD learn frames (the one cut the plain rule made there "
+                        "split an occluded box)"})
+      .param("max_cut_nodes", 120,
+             "Groups of more nodes are not cut (the cut is cubic in the group's size).",
+             {.min = 4.0, .max = 1.0e5})
+      .param("emit_graph", false,
+             "Fill the graph output. The runtime does not tell a stage whether an output is "
+             "connected, so the graph is only built when asked for.")
+      .concurrency(Concurrency::clonable);
+}
+
+PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(params.get_bool("emit_graph")) {
+  rule_.nodes = {static_cast<std::int32_t>(params.get_int("min_patch_px")),
+                 params.get_double("planar_max_rms_m")};
+  rule_.convex = params.get_bool("convex");
+  rule_.convex_rule = {params.get_double("convex_tolerance_m"),
+                       params.get_double("convex_min_behind_share"),
+                       params.get_double("convex_min_angle_deg"), rule_.nodes.min_patch_px};
+  rule_.coplanar = params.get_bool("coplanar");
+  rule_.coplanar_rule = {params.get_double("coplanar_max_angle_deg"),
+                         params.get_double("coplanar_max_distance_m"),
+                         params.get_double("coplanar_max_gap_m"),
+                         params.get_double("coplanar_front_margin_m"),
+                         params.get_double("coplanar_min_front_share"),
+                         static_cast<std::int32_t>(params.get_int("coplanar_min_gap_px")),
+                         static_cast<std::int32_t>(params.get_int("coplanar_lines")),
+                         static_cast<std::int32_t>(params.get_int("max_partners")),
+                         params.get_bool("coplanar_across_blobs_only")};
+  rule_.curvature = params.get_bool("curvature");
+  rule_.curvature_rule = {params.get_double("curvature_tolerance_m"),
+                          params.get_double("curvature_min_share"),
+                          params.get_double("curvature_min_axis_ratio"),
+                          static_cast<std::int32_t>(params.get_int("curvature_samples")),
+                          params.get_double("curvature_max_gap_m"),
+                          params.get_double("curvature_max_occluded_gap_m")};
+  rule_.cut = {params.get_bool("cut"), params.get_double("max_cut_cost"),
+               static_cast<std::int32_t>(params.get_int("max_cut_nodes")),
+               params.get_bool("cut_needs_cycles")};
+}
+
+void PartitionGraph::process(ProcessContext& ctx) {
+  const auto& blobs = ctx.input<LabelImage>("blobs");
+  const auto& patches = ctx.input<LabelImage>("patches");
+  const auto& adjacency = ctx.input<PatchAdjacency>("adjacency");
+  const auto& points = ctx.input<PointImage>("points");
+  LabelImage objects;
+  static_cast<FrameHeader&>(objects) = blobs;
+  auto report = [&](std::int64_t convex, std::int64_t coplanar, std::int64_t curvature) {
+    ctx.metric("objects", objects.count);
+    ctx.metric("nodes", static_cast<double>(graph_.nodes.size()));
+    ctx.metric("convex_edges", static_cast<double>(convex));
+    ctx.metric("coplanar_edges", static_cast<double>(coplanar));
+    ctx.metric("curvature_edges", static_cast<double>(curvature));
+    ctx.metric("cuts", static_cast<double>(cut_.cuts()));
+  };
+  graph_.nodes.clear();
+  if (blobs.labels.empty()) {
+    report(0, 0, 0);
+    ctx.output("objects", std::move(objects));
+    return;
+  }
+  check_partition_inputs(blobs.labels, patches.labels, points.points);
+  // The gap lines read the images as flat arrays.
+  const cv::Mat patch_image =
+      patches.labels.isContinuous() ? patches.labels : patches.labels.clone();
+  const cv::Mat point_image = points.points.isContinuous() ? points.points : points.points.clone();
+  const cv::Mat blob_image = blobs.labels.isContinuous() ? blobs.labels : blobs.labels.clone();
+  segments_.build(blobs.labels, patch_image, point_image);
+  neighbours_.build(adjacency, segments_.max_patch);
+  graph_.build(segments_, blobs.labels.cols, rule_.nodes);
+
+  edges_.clear();
+  if (rule_.convex) {
+    add_convex_edges(segments_, graph_, neighbours_, rule_.convex_rule, node_of_patch_, edges_);
+  }
+  const std::size_t convex_count = edges_.size();
+  const TouchingNodes touching = touching_nodes(graph_, neighbours_);
+  if (rule_.coplanar) {
+    add_coplanar_edges(graph_, FrameImages{&patch_image, &point_image, &blob_image}, touching,
+                       rule_.coplanar_rule, edges_);
+  }
+  const std::size_t coplanar_count = edges_.size() - convex_count;
+  if (rule_.curvature) {
+    add_curvature_edges(segments_, graph_, FrameImages{&patch_image, &point_image, &blob_image},
+                        rule_.coplanar_rule, rule_.curvature_rule, edges_);
+  }
+  const std::size_t curvature_count = edges_.size() - convex_count - coplanar_count;
+
+  const auto node_count = static_cast<std::int32_t>(graph_.nodes.size());
+  const std::vector<std::int32_t>& group = cut_.groups(node_count, edges_, rule_.cut);
+  objects.labels = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
+  auto* labels = objects.labels.ptr<std::int32_t>();
+  std::int32_t next_id = 1;
+  for (std::int32_t i = 0; i < node_count; ++i) {
+    const GraphNode& node = graph_.nodes[static_cast<std::size_t>(i)];
+    const std::int32_t id = 1 + group[static_cast<std::size_t>(i)];
+    next_id = std::max(next_id, id + 1);
+    if (node.segment < 0) continue;  // a patchless blob: fill_blob_gaps gives it its own id
+    const Segment& segment = segments_.segments[static_cast<std::size_t>(node.segment)];
+    for (std::int32_t k = segment.begin; k < segment.end; ++k) {
+      labels[segments_.pixel[static_cast<std::size_t>(k)]] = id;
+    }
+  }
+  fill_blob_gaps(objects.labels, blobs.labels, next_id);
+  objects.count = relabel_in_raster_order(objects.labels);
+  report(static_cast<std::int64_t>(convex_count), static_cast<std::int64_t>(coplanar_count),
+         static_cast<std::int64_t>(curvature_count));
+  if (emit_graph_) {
+    ctx.output("graph", make_patch_graph(objects, graph_, edges_, group));
+  }
+  ctx.output("objects", std::move(objects));
+}
+
+}  // namespace facet::partition

@@ -1,0 +1,47 @@
+#pragma once
+// partition.graph: objects as the groups of a graph of surface patches, joined by convex
+// junctions, by one plane seen on both sides of an occluder, and by one curved surface (the
+// authors' later algorithm); weak bridges between groups are cut.
+
+#include <cstdint>
+#include <vector>
+
+#include "facet/stage.hpp"
+#include "partition/blob_segments.hpp"
+#include "partition/convex_merge.hpp"
+#include "partition/graph_cut.hpp"
+#include "partition/graph_edges.hpp"
+#include "partition/graph_nodes.hpp"
+
+namespace facet::partition {
+
+struct GraphRule {
+  NodeRule nodes;
+  bool convex = true;
+  ConvexRule convex_rule;
+  bool coplanar = true;
+  CoplanarRule coplanar_rule;
+  bool curvature = true;
+  CurvatureRule curvature_rule;
+  CutRule cut;
+};
+
+class PartitionGraph final : public Stage {
+ public:
+  static StageSpec spec();
+  explicit PartitionGraph(const Params& params);
+  void process(ProcessContext& ctx) override;
+
+ private:
+  GraphRule rule_;
+  bool emit_graph_;
+  // Kept from frame to frame for their buffers only.
+  BlobSegments segments_;
+  PatchNeighbours neighbours_;
+  GraphNodes graph_;
+  GraphCut cut_;
+  std::vector<GraphEdge> edges_;
+  std::vector<std::int32_t> node_of_patch_;
+};
+
+}  // namespace facet::partition

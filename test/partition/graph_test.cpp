@@ -1,0 +1,373 @@
+// partition.graph: each edge feature on exact geometry, each feature switched off, the cut.
+
+#include <gtest/gtest.h>
+
+#include "graph_scenes.hpp"
+#include "partition/graph_cut.hpp"
+#include "partition/graph_stage.hpp"
+#include "partition/patch_graph.hpp"
+#include "test_scenes.hpp"
+
+namespace facet::test {
+namespace {
+
+using partition::PartitionGraph;
+
+struct TableScene {
+  RenderedScene scene;
+  std::int32_t table = 0;  // object id of the table plane
+};
+
+// The objects of `t`, with the table plane rendered behind them.
+TableScene on_table(const Tabletop& t) {
+  SceneBuilder builder = t.builder();
+  add_table(t, builder);
+  TableScene out{builder.render(), 0};
+  double top = 0.0;
+  cv::minMaxLoc(out.scene.object, nullptr, &top);
+  out.table = static_cast<std::int32_t>(top);  // added last
+  return out;
+}
+
+// A wide box behind a taller cylinder that hides the middle of its front and top faces: the box
+// is seen in two parts, two blobs.
+TableScene box_behind_cylinder() {
+  Tabletop t;
+  t.box(0.0, 0.10, {0.14, 0.04, 0.05}).cylinder(0.0, -0.06, 0.035, 0.13);
+  return on_table(t);
+}
+
+// Two equal boxes side by side with the table visible between them: their fronts and tops are
+// coplanar, but the gap is seen through, not occluded.
+TableScene boxes_with_visible_gap() {
+  Tabletop t;
+  t.box(-0.09, 0.0, {0.06, 0.05, 0.05}).box(0.09, 0.0, {0.06, 0.05, 0.05});
+  return on_table(t);
+}
+
+TableScene bowl() {
+  Tabletop t;
+  TableScene out = on_table(t);
+  add_bowl(out.scene, t, 0.0, 0.0, 0.08, 0.006, out.table + 1, 100);
+  return out;
+}
+
+// A bowl beside a cylinder it touches: two round objects in one blob.
+TableScene bowl_touching_can() {
+  Tabletop t;
+  t.cylinder(0.125, 0.0, 0.045, 0.07);
+  TableScene out = on_table(t);
+  add_bowl(out.scene, t, 0.0, 0.0, 0.08, 0.006, out.table + 1, 100);
+  return out;
+}
+
+LabelImage run_graph(const PartitionInput& input,
+                     const std::map<std::string, ParamValue>& params = {},
+                     std::vector<Metric>* metrics = nullptr) {
+  return run_partition<PartitionGraph>(input, params, metrics);
+}
+
+std::int32_t count_of(const LabelImage& labels) {
+  double top = 0.0;
+  cv::minMaxLoc(labels.labels, nullptr, &top);
+  return static_cast<std::int32_t>(top);
+}
+
+TEST(PartitionGraphScenes, OccludedBoxIsInTwoBlobs) {
+  // The precondition of the coplanar tests: the cylinder really cuts the box in two.
+  const TableScene s = box_behind_cylinder();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  EXPECT_EQ(count_of(input.blobs), 3);
+  const TableScene b = bowl();
+  const PartitionInput bowl_input = graph_input(b.scene, b.table);
+  EXPECT_EQ(count_of(bowl_input.blobs), 1);
+  EXPECT_EQ(count_of(bowl_input.patches), 2);  // outside (with the rim) and inside
+  EXPECT_EQ(bowl_input.adjacency.pairs.size(), 1U);
+}
+
+TEST(PartitionGraph, CoplanarHalvesBehindAnOccluderAreOneObject) {
+  const TableScene s = box_behind_cylinder();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
+  EXPECT_GE(metric_value(metrics, "coplanar_edges"), 2.0);  // the fronts and the tops
+}
+
+TEST(PartitionGraph, CoplanarFeatureOffLeavesTheHalvesApart) {
+  const TableScene s = box_behind_cylinder();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  const LabelImage objects = run_graph(input, {{"coplanar", false}});
+  EXPECT_EQ(objects.count, 3);
+}
+
+TEST(PartitionGraph, GapWithoutDepthIsNoEvidence) {
+  // The occluder measured no depth at all (e.g. black or shiny): the gap's pixels count as
+  // neither in front nor behind, so nothing says the two halves are one surface.
+  const TableScene s = box_behind_cylinder();
+  PartitionInput input = graph_input(s.scene, s.table);
+  const cv::Mat cylinder = s.scene.object == 2;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  input.points.points.setTo(cv::Scalar(nan, nan, nan), cylinder);
+  input.blobs.labels.setTo(0, cylinder);
+  input.patches.labels.setTo(0, cylinder);
+  input.adjacency = contacts_of(input.patches.labels);
+  const LabelImage objects = run_graph(input);
+  EXPECT_EQ(objects.count, 2);  // the two halves
+}
+
+TEST(PartitionGraph, CoplanarBoxesWithTheTableBetweenThemStayApart) {
+  const TableScene s = boxes_with_visible_gap();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 2);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+  EXPECT_EQ(metric_value(metrics, "coplanar_edges"), 0.0);
+  // The same pairs pass the cheap tests: with the occlusion test made void they are joined,
+  // which shows that the gap's content is what keeps them apart.
+  const LabelImage joined =
+      run_graph(input, {{"coplanar_min_front_share", 0.0}, {"coplanar_front_margin_m", 1.0}});
+  EXPECT_EQ(joined.count, 1);
+}
+
+TEST(PartitionGraph, OccludedFrontBelowAVisibleTopIsOneObject) {
+  // A box in front, a little taller, hides the middle of a wide box's front; the wide box's top,
+  // seen above it, keeps both pieces in one blob. The top is left in no patch (on real frames it
+  // often breaks into small pieces), so only the coplanar feature can join the two pieces.
+  Tabletop t;
+  t.box(0.0, 0.10, {0.14, 0.04, 0.08}).box(0.0, 0.0, {0.05, 0.04, 0.09});
+  const TableScene s = on_table(t);
+  PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 2);
+  // The wide box's patches: its top (highest in the image) and the two pieces of its front.
+  std::map<std::int32_t, std::pair<double, int>> rows;  // patch -> (sum of v, pixels)
+  for (int v = 0; v < input.patches.labels.rows; ++v) {
+    for (int u = 0; u < input.patches.labels.cols; ++u) {
+      const std::int32_t patch = input.patches.labels.at<std::int32_t>(v, u);
+      if (s.scene.object.at<std::int32_t>(v, u) != 1 || patch == 0) continue;
+      rows[patch].first += v;
+      ++rows[patch].second;
+    }
+  }
+  ASSERT_EQ(rows.size(), 3U);
+  std::int32_t top = 0;
+  double top_v = 1e9;
+  for (const auto& [patch, sum] : rows) {
+    if (sum.first / sum.second < top_v) {
+      top_v = sum.first / sum.second;
+      top = patch;
+    }
+  }
+  input.patches.labels.setTo(0, input.patches.labels == top);
+  input.adjacency = contacts_of(input.patches.labels);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
+  EXPECT_EQ(metric_value(metrics, "coplanar_edges"), 1.0);
+  EXPECT_EQ(run_graph(input, {{"coplanar_across_blobs_only", true}}).count, 3);
+}
+
+TEST(PartitionGraph, EqualBoxesBesideATallerOneAreThreeObjects) {
+  // Two boxes of equal height touching a taller box between them: their tops and fronts are
+  // coplanar and the taller box is in front of those planes, but it touches both (one blob):
+  // a body beside them, not an occluder hiding one box.
+  Tabletop t;
+  t.box(-0.12, 0.0, {0.06, 0.05, 0.04}).box(0.0, 0.0, {0.06, 0.05, 0.08});
+  t.box(0.12, 0.0, {0.06, 0.05, 0.04});
+  const TableScene s = on_table(t);
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 3);
+  EXPECT_EQ(metric_value(metrics, "coplanar_edges"), 0.0);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+}
+
+TEST(PartitionGraph, BowlInsideAndOutsideAreOneObject) {
+  const TableScene s = bowl();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 1);
+  EXPECT_EQ(metric_value(metrics, "curvature_edges"), 1.0);
+}
+
+TEST(PartitionGraph, BowlInsideAndOutsideInTwoBlobsAreOneObject) {
+  // Seen from above, the rim is a depth step between the outside and the inside behind it; when
+  // the rim's pixels are lost (as edge pixels often are), the two are separate blobs.
+  const TableScene s = bowl();
+  PartitionInput input = graph_input(s.scene, s.table);
+  // The rim: outside pixels within 3 pixels of the inside.
+  const cv::Mat& faces = input.patches.labels;
+  cv::Mat rim = cv::Mat::zeros(faces.size(), CV_8UC1);
+  for (int v = 3; v + 3 < faces.rows; ++v) {
+    for (int u = 3; u + 3 < faces.cols; ++u) {
+      if (faces.at<std::int32_t>(v, u) != 1) continue;
+      const cv::Mat window = faces(cv::Rect(u - 3, v - 3, 7, 7));
+      if (cv::countNonZero(window == 2) > 0) rim.at<std::uint8_t>(v, u) = 255;
+    }
+  }
+  input.blobs.labels.setTo(0, rim);
+  input.patches.labels.setTo(0, rim);
+  input.blobs = label_image(blobs_by_distance(input.points.points, input.blobs.labels > 0, 0.01));
+  input.adjacency = contacts_of(input.patches.labels);
+  ASSERT_EQ(count_of(input.blobs), 2);
+  EXPECT_EQ(run_graph(input).count, 1);
+  EXPECT_EQ(run_graph(input, {{"curvature", false}}).count, 2);
+}
+
+TEST(PartitionGraph, CurvatureFeatureOffLeavesTheBowlInTwo) {
+  const TableScene s = bowl();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {{"curvature", false}}, &metrics);
+  EXPECT_EQ(objects.count, 2);
+  // The junction at the rim is not convex: only the curvature feature joins the two.
+  EXPECT_EQ(metric_value(metrics, "convex_edges"), 0.0);
+}
+
+TEST(PartitionGraph, BowlTouchingACanIsTwoObjects) {
+  const TableScene s = bowl_touching_can();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  const LabelImage objects = run_graph(input);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
+}
+
+TEST(PartitionGraph, TouchingBoxesOnATableAreTwoObjects) {
+  Tabletop t;
+  t.box(-0.06, -0.04, {0.06, 0.05, 0.05}).box(0.06, 0.04, {0.06, 0.05, 0.05});
+  const TableScene s = on_table(t);
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  const LabelImage objects = run_graph(input);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+}
+
+TEST(PartitionGraph, ConvexFeatureOffLeavesEveryFaceApart) {
+  const PartitionInput input = single_box();
+  EXPECT_EQ(run_graph(input).count, 1);
+  EXPECT_EQ(run_graph(input, {{"convex", false}}).count, 3);
+}
+
+TEST(PartitionGraph, IsDeterministic) {
+  const TableScene s = box_behind_cylinder();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  const LabelImage first = run_graph(input);
+  const LabelImage second = run_graph(input);
+  EXPECT_EQ(cv::norm(first.labels, second.labels, cv::NORM_INF), 0.0);
+}
+
+TEST(PartitionGraph, EmitsTheGraphOnlyWhenAsked) {
+  const TableScene s = box_behind_cylinder();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  testing::StageRunner<PartitionGraph> quiet;
+  testing::StageRunner<PartitionGraph> loud({{"emit_graph", true}});
+  for (auto* runner : {&quiet, &loud}) {
+    runner->set_input("blobs", Packet::make(input.blobs));
+    runner->set_input("patches", Packet::make(input.patches));
+    runner->set_input("adjacency", Packet::make(input.adjacency));
+    runner->set_input("points", Packet::make(input.points));
+    runner->run();
+  }
+  EXPECT_TRUE(quiet.output_packet("graph").empty());
+  const auto& graph = loud.output<partition::PatchGraph>("graph");
+  const auto& objects = loud.output<LabelImage>("objects");
+  ASSERT_GE(graph.nodes.size(), 5U);  // two faces of each half, the cylinder's side and top
+  std::int32_t coplanar = 0;
+  for (const auto& edge : graph.edges) {
+    if (edge.feature != "coplanar") continue;
+    ++coplanar;
+    EXPECT_TRUE(edge.kept);
+    EXPECT_NE(graph.nodes[static_cast<std::size_t>(edge.a)].blob,
+              graph.nodes[static_cast<std::size_t>(edge.b)].blob);
+    EXPECT_EQ(graph.nodes[static_cast<std::size_t>(edge.a)].object,
+              graph.nodes[static_cast<std::size_t>(edge.b)].object);
+  }
+  EXPECT_GE(coplanar, 2);
+  for (const auto& node : graph.nodes) {
+    EXPECT_GE(node.object, 1);
+    EXPECT_LE(node.object, objects.count);
+  }
+  const std::string json = partition::patch_graph_json(graph);
+  EXPECT_NE(json.find("\"feature\": \"coplanar\""), std::string::npos);
+}
+
+// --- the cut on hand-made graphs ---
+
+using partition::CutRule;
+using partition::EdgeFeature;
+using partition::GraphCut;
+using partition::GraphEdge;
+
+std::vector<GraphEdge> edges_of(const std::vector<std::pair<int, int>>& pairs) {
+  std::vector<GraphEdge> edges;
+  for (const auto& [a, b] : pairs)
+    edges.push_back({a, b, EdgeFeature::convex});
+  return edges;
+}
+
+std::int32_t group_count(const std::vector<std::int32_t>& groups) {
+  return groups.empty() ? 0 : 1 + *std::max_element(groups.begin(), groups.end());
+}
+
+TEST(PartitionGraphCut, BridgeBetweenTwoTrianglesIsCut) {
+  // Each bridge end has degree 3: cost 1/2 (1/3 + 1/3) = 1/3 < 1/2.
+  const auto edges = edges_of({{0, 1}, {1, 2}, {0, 2}, {3, 4}, {4, 5}, {3, 5}, {2, 3}});
+  GraphCut cut;
+  const auto groups = cut.groups(6, edges, CutRule{});
+  EXPECT_EQ(group_count(groups), 2);
+  EXPECT_EQ(groups[0], groups[2]);
+  EXPECT_EQ(groups[3], groups[5]);
+  EXPECT_NE(groups[2], groups[3]);
+  EXPECT_EQ(cut.cuts(), 1);
+  CutRule off;
+  off.enabled = false;
+  EXPECT_EQ(group_count(cut.groups(6, edges, off)), 1);
+}
+
+TEST(PartitionGraphCut, LeavesPathsStarsAndCliquesWhole) {
+  GraphCut cut;
+  // A path: every edge has an end of degree <= 2, costs >= 1/2 (one end 1: >= 3/4).
+  EXPECT_EQ(group_count(cut.groups(5, edges_of({{0, 1}, {1, 2}, {2, 3}, {3, 4}}), CutRule{})), 1);
+  // A patch touching every other (a star of 30): leaves cost more than 1/2.
+  std::vector<std::pair<int, int>> star;
+  for (int k = 1; k < 30; ++k)
+    star.emplace_back(0, k);
+  EXPECT_EQ(group_count(cut.groups(30, edges_of(star), CutRule{})), 1);
+  // A box's three faces and a fourth patch on one of them.
+  EXPECT_EQ(group_count(cut.groups(4, edges_of({{0, 1}, {1, 2}, {0, 2}, {2, 3}}), CutRule{})), 1);
+}
+
+TEST(PartitionGraphCut, TreesAreNotCutUnlessAsked) {
+  // A box's top (0) on its front seen in two pieces (1, 2) around an occluder, with a small
+  // face on each piece (3, 4): the bridge 1-2 costs 1/2 (1/3 + 1/3) < 1/2, but neither side is
+  // a dense group.
+  const auto edges = edges_of({{0, 1}, {0, 2}, {1, 3}, {2, 4}, {1, 2}});
+  GraphCut cut;
+  EXPECT_EQ(group_count(cut.groups(5, edges, CutRule{})), 1);
+  const auto tree = edges_of({{0, 1}, {1, 2}, {2, 3}, {1, 4}, {2, 5}});
+  EXPECT_EQ(group_count(cut.groups(6, tree, CutRule{})), 1);
+  CutRule plain;
+  plain.needs_cycles = false;
+  EXPECT_EQ(group_count(cut.groups(6, tree, plain)), 2);  // the bridge 1-2: 1/2 (1/3 + 1/3)
+}
+
+TEST(PartitionGraphCut, DuplicateEdgesCountOnceAndIsolatedNodesAreGroups) {
+  GraphCut cut;
+  auto edges = edges_of({{0, 1}, {1, 2}, {0, 2}, {3, 4}, {4, 5}, {3, 5}, {2, 3}});
+  edges.push_back({2, 3, EdgeFeature::coplanar});  // a second feature on the bridge
+  const auto groups = cut.groups(7, edges, CutRule{});
+  EXPECT_EQ(group_count(groups), 3);  // node 6 has no edge
+  EXPECT_EQ(groups[6], 2);            // groups are numbered by their first node
+}
+
+}  // namespace
+}  // namespace facet::test
