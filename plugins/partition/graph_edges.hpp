@@ -48,6 +48,10 @@ struct CoplanarRule {
   std::int32_t lines = 3;          // image lines sampled between the two patches
   std::int32_t max_partners = 4;   // image lines only to each patch's nearest candidates
   bool across_blobs_only = false;  // only pairs of patches in different blobs
+  // Touching planar patches of one blob whose centres lie at most this far from each other's
+  // plane (and normals within max_angle_deg) are one surface that an edge line broke (noise, a
+  // label or a seam); 0 = never joined this way.
+  double touching_max_distance_m = 0.0;
 };
 
 // Per node, the nodes whose patches touch its patch in the image (grow.surfaces' adjacency),
@@ -56,7 +60,8 @@ using TouchingNodes = std::vector<std::vector<std::int32_t>>;
 TouchingNodes touching_nodes(const GraphNodes& graph, const PatchNeighbours& neighbours);
 
 // coplanar across an occluder: two planar patches that do not touch, on one plane, with the
-// pixels between them in the image in front of that plane (graph_gap.hpp).
+// pixels between them in the image in front of that plane (graph_gap.hpp). With
+// touching_max_distance_m, also two touching patches of one blob on one plane.
 void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
                         const TouchingNodes& touching, const CoplanarRule& rule,
                         std::vector<GraphEdge>& edges);

@@ -40,12 +40,20 @@ void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
       const GraphNode& b = graph.nodes[static_cast<std::size_t>(j)];
       if (rule.across_blobs_only && a.blob == b.blob) continue;
       if (normal_cosine(a.plane, b.plane) < min_cos) continue;
-      if (std::abs(distance_to(a.plane, b.plane.centroid_m)) > rule.max_distance_m) continue;
-      if (std::abs(distance_to(b.plane, a.plane.centroid_m)) > rule.max_distance_m) continue;
+      const double a_off_b = std::abs(distance_to(b.plane, a.plane.centroid_m));
+      const double b_off_a = std::abs(distance_to(a.plane, b.plane.centroid_m));
+      if (std::max(a_off_b, b_off_a) > rule.max_distance_m) continue;
+      // Touching patches meet at a step or a crease (the convex feature's), or, on one plane
+      // within a blob, are one surface broken by an edge line.
+      if (std::binary_search(touching_a.begin(), touching_a.end(), j)) {
+        if (rule.touching_max_distance_m > 0.0 && a.blob == b.blob &&
+            std::max(a_off_b, b_off_a) <= rule.touching_max_distance_m) {
+          edges.push_back({i, j, EdgeFeature::coplanar});
+        }
+        continue;
+      }
       const double gap_m = box_gap_m(a.bounds, b.bounds);
       if (gap_m > rule.max_gap_m) continue;
-      // Touching patches are the convex feature's: a step or a crease, not an occluded gap.
-      if (std::binary_search(touching_a.begin(), touching_a.end(), j)) continue;
       candidates.push_back({i, j, gap_m});
     }
   }

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
+
 #include "graph_scenes.hpp"
 #include "partition/graph_cut.hpp"
 #include "partition/graph_stage.hpp"
@@ -169,6 +172,50 @@ TEST(PartitionGraph, OccludedFrontBelowAVisibleTopIsOneObject) {
   EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
   EXPECT_EQ(metric_value(metrics, "coplanar_edges"), 1.0);
   EXPECT_EQ(run_graph(input, {{"coplanar_across_blobs_only", true}}).count, 3);
+}
+
+// A box whose front face an edge line broke into two patches (noise, a printed label): with its
+// top left out, only the touching-coplanar rule (off by default) joins the front's left half
+// to the rest.
+TEST(PartitionGraph, FaceBrokenByAnEdgeLineIsOneSurface) {
+  Tabletop t;
+  t.box(0.0, 0.05, {0.12, 0.05, 0.08});
+  const TableScene s = on_table(t);
+  PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  // The box's patches by mean row: the top is highest in the image; the front is the largest.
+  std::map<std::int32_t, std::array<double, 3>> stats;  // patch -> (sum v, sum u, pixels)
+  for (int v = 0; v < input.patches.labels.rows; ++v) {
+    for (int u = 0; u < input.patches.labels.cols; ++u) {
+      const std::int32_t patch = input.patches.labels.at<std::int32_t>(v, u);
+      if (s.scene.object.at<std::int32_t>(v, u) != 1 || patch == 0) continue;
+      stats[patch][0] += v;
+      stats[patch][1] += u;
+      stats[patch][2] += 1;
+    }
+  }
+  ASSERT_GE(stats.size(), 2U);
+  std::int32_t top = 0;
+  std::int32_t front = 0;
+  for (const auto& [patch, sum] : stats) {
+    if (top == 0 || sum[0] / sum[2] < stats[top][0] / stats[top][2]) top = patch;
+    if (front == 0 || sum[2] > stats[front][2]) front = patch;
+  }
+  ASSERT_NE(top, front);
+  input.patches.labels.setTo(0, input.patches.labels == top);
+  // Split the front at its mean column.
+  const double split_u = stats[front][1] / stats[front][2];
+  const std::int32_t left = input.patches.count + 1;
+  for (int v = 0; v < input.patches.labels.rows; ++v) {
+    for (int u = 0; u < static_cast<int>(split_u); ++u) {
+      auto& patch = input.patches.labels.at<std::int32_t>(v, u);
+      if (patch == front) patch = left;
+    }
+  }
+  input.patches.count = left;
+  input.adjacency = contacts_of(input.patches.labels);
+  EXPECT_EQ(run_graph(input, {{"coplanar_touching_max_distance_m", 0.005}}).count, 1);
+  EXPECT_EQ(run_graph(input).count, 2);  // off by default: flush boxes look the same
 }
 
 TEST(PartitionGraph, EqualBoxesBesideATallerOneAreThreeObjects) {
