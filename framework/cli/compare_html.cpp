@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <string>
 
+#include "facet/framework/svg_plot.hpp"
+
 namespace facet::cli {
 namespace {
 
@@ -18,36 +20,6 @@ td.shared{color:#777}
 .images img{display:block;max-width:320px;image-rendering:pixelated}
 svg text{font-size:12px}
 )";
-
-// Fixed colours per variant (first ten; then they repeat), shared by every plot.
-const char* colour(std::size_t index) {
-  static constexpr const char* kColours[] = {"#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2",
-                                             "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
-  return kColours[index % 10];
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 struct Bar {
   std::string label;
@@ -69,22 +41,22 @@ void write_bar_chart(std::ostream& out, const std::string& title, const std::str
   const int group_height = static_cast<int>(variants) * kBarHeight + 10;
   const int legend_height = 18;
   const int height = legend_height + static_cast<int>(bars.size()) * group_height + 10;
-  out << "<h3>" << escape(title) << "</h3>\n";
+  out << "<h3>" << xml_escape(title) << "</h3>\n";
   out << fmt::format(R"(<svg class="chart" xmlns="http://www.w3.org/2000/svg" width="{}" )"
                      R"(height="{}" role="img" aria-label="{}">)",
-                     kLabelWidth + kPlotWidth + 80, height, escape(title))
+                     kLabelWidth + kPlotWidth + 80, height, xml_escape(title))
       << '\n';
   for (std::size_t v = 0; v < variants; ++v) {
     const int x = kLabelWidth + static_cast<int>(v) * 90;
     out << fmt::format(R"(<rect x="{}" y="2" width="10" height="10" fill="{}"/>)"
                        R"(<text x="{}" y="11">{}</text>)",
-                       x, colour(v), x + 14, escape(summary.variants[v].name))
+                       x, series_colour(v), x + 14, xml_escape(summary.variants[v].name))
         << '\n';
   }
   for (std::size_t b = 0; b < bars.size(); ++b) {
     const int top = legend_height + static_cast<int>(b) * group_height;
     out << fmt::format(R"(<text x="{}" y="{}" text-anchor="end">{}</text>)", kLabelWidth - 6,
-                       top + group_height / 2 + 4, escape(bars[b].label))
+                       top + group_height / 2 + 4, xml_escape(bars[b].label))
         << '\n';
     for (std::size_t v = 0; v < variants && v < bars[b].values.size(); ++v) {
       const double value = bars[b].values[v];
@@ -94,8 +66,8 @@ void write_bar_chart(std::ostream& out, const std::string& title, const std::str
       out << fmt::format(R"(<rect x="{}" y="{}" width="{:.1f}" height="{}" fill="{}">)"
                          R"(<title>{}: {:.4g} {}</title></rect>)"
                          R"(<text x="{:.1f}" y="{}">{:.3g}</text>)",
-                         kLabelWidth, y, width, kBarHeight - 2, colour(v),
-                         escape(summary.variants[v].name), value, escape(unit),
+                         kLabelWidth, y, width, kBarHeight - 2, series_colour(v),
+                         xml_escape(summary.variants[v].name), value, xml_escape(unit),
                          kLabelWidth + width + 4, y + kBarHeight - 3, value)
           << '\n';
     }
@@ -141,12 +113,12 @@ void write_frame_chart(std::ostream& out, const CompareSummary& summary) {
       points += fmt::format("{:.1f},{:.1f} ", x_of(i), y_of(variant.frame_ms[i]));
     out << fmt::format(R"(<polyline fill="none" stroke="{}" stroke-width="1.5" points="{}">)"
                        R"(<title>{}</title></polyline>)",
-                       colour(v), points, escape(variant.name))
+                       series_colour(v), points, xml_escape(variant.name))
         << '\n';
     out << fmt::format(R"(<rect x="{}" y="4" width="10" height="10" fill="{}"/>)"
                        R"(<text x="{}" y="13">{}</text>)",
-                       kLeft + static_cast<int>(v) * 90, colour(v),
-                       kLeft + static_cast<int>(v) * 90 + 14, escape(variant.name))
+                       kLeft + static_cast<int>(v) * 90, series_colour(v),
+                       kLeft + static_cast<int>(v) * 90 + 14, xml_escape(variant.name))
         << '\n';
   }
   out << "</svg>\n";
@@ -194,17 +166,17 @@ void write_summary_table(std::ostream& out, const CompareSummary& summary) {
   out << "<table id=\"summary\"><tr><th>variant</th>";
   if (sweep != nullptr) {
     for (const auto& axis : sweep->axes)
-      out << "<th>" << escape(axis.key()) << "</th>";
+      out << "<th>" << xml_escape(axis.key()) << "</th>";
   }
   out << "<th>frame median ms</th><th>frame p95 ms</th>";
   if (scored) out << "<th>F</th><th>precision</th><th>recall</th><th>objects F&ge;0.75</th>";
   out << "</tr>\n";
   for (std::size_t v = 0; v < summary.variants.size(); ++v) {
     const VariantSummary& variant = summary.variants[v];
-    out << "<tr><td>" << escape(variant.name) << "</td>";
+    out << "<tr><td>" << xml_escape(variant.name) << "</td>";
     if (sweep != nullptr && v < sweep->points.size()) {
       for (std::size_t a = 0; a < sweep->axes.size(); ++a)
-        out << "<td>" << escape(sweep->axes[a].texts[sweep->points[v].index[a]]) << "</td>";
+        out << "<td>" << xml_escape(sweep->axes[a].texts[sweep->points[v].index[a]]) << "</td>";
     }
     out << fmt::format("<td>{:.2f}</td><td>{:.2f}</td>", variant.median_ms, variant.p95_ms);
     if (scored) {
@@ -220,16 +192,16 @@ void write_summary_table(std::ostream& out, const CompareSummary& summary) {
 
 void write_variant_tables(std::ostream& out, const CompareSummary& summary) {
   for (const auto& variant : summary.variants) {
-    out << "<h3>" << escape(variant.name) << "</h3>\n";
+    out << "<h3>" << xml_escape(variant.name) << "</h3>\n";
     out << "<table class=\"stages\"><tr><th>node</th><th>stage</th><th>role</th><th>shared</th>"
            "<th>calls</th><th>median ms</th><th>p95 ms</th></tr>\n";
     for (const auto& stage : variant.stages) {
       out << fmt::format(
           "<tr><td{}>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.3f}</td>"
           "<td>{:.3f}</td></tr>\n",
-          stage.shared ? " class=\"shared\"" : "", escape(stage.merged_id), escape(stage.stage),
-          role_name(stage.role), stage.shared ? "yes" : "no", stage.calls, stage.median_ms,
-          stage.p95_ms);
+          stage.shared ? " class=\"shared\"" : "", xml_escape(stage.merged_id),
+          xml_escape(stage.stage), role_name(stage.role), stage.shared ? "yes" : "no", stage.calls,
+          stage.median_ms, stage.p95_ms);
     }
     out << "</table>\n";
     if (variant.metrics.empty()) continue;
@@ -239,8 +211,8 @@ void write_variant_tables(std::ostream& out, const CompareSummary& summary) {
       out << fmt::format(
           "<tr><td>{}.{}</td><td>{}</td><td>{:.4g}</td><td>{:.4g}</td><td>{:.4g}</td>"
           "<td>{:.4g}</td></tr>\n",
-          escape(metric.node), escape(metric.name), metric.count, metric.mean, metric.median,
-          metric.min, metric.max);
+          xml_escape(metric.node), xml_escape(metric.name), metric.count, metric.mean,
+          metric.median, metric.min, metric.max);
     }
     out << "</table>\n";
   }
@@ -253,8 +225,8 @@ void write_sweep(std::ostream& out, const SweepSummary& sweep,
          "</tr>\n";
   for (const auto& score : sweep.scores) {
     if (!score.best) continue;
-    out << fmt::format("<tr><td>{}</td><td>{:.4g}</td><td>{}</td></tr>\n", escape(score.label),
-                       score.values[*score.best], escape(sweep.points[*score.best].name));
+    out << fmt::format("<tr><td>{}</td><td>{:.4g}</td><td>{}</td></tr>\n", xml_escape(score.label),
+                       score.values[*score.best], xml_escape(sweep.points[*score.best].name));
   }
   out << "</table>\n";
   for (const auto& plateau : sweep.plateaus) {
@@ -265,13 +237,13 @@ void write_sweep(std::ostream& out, const SweepSummary& sweep,
     out << fmt::format(
         "<p class=\"plateau\">Plateau of {} along {}: {} .. {} ({} point(s){}), where it stays "
         "within {} of its best {:.4g}.</p>\n",
-        escape(plateau.score), escape(axis.key()),
-        escape(axis.texts[sweep.points[plateau.first].index[plateau.axis]]),
-        escape(axis.texts[sweep.points[plateau.last].index[plateau.axis]]), plateau.points,
-        escape(fixed), plateau.within, plateau.best);
+        xml_escape(plateau.score), xml_escape(axis.key()),
+        xml_escape(axis.texts[sweep.points[plateau.first].index[plateau.axis]]),
+        xml_escape(axis.texts[sweep.points[plateau.last].index[plateau.axis]]), plateau.points,
+        xml_escape(fixed), plateau.within, plateau.best);
   }
   for (const auto& plot : plots)
-    out << "<h3>" << escape(plot.name) << "</h3>\n" << plot.svg;
+    out << "<h3>" << xml_escape(plot.name) << "</h3>\n" << plot.svg;
 }
 
 void write_images(std::ostream& out, const CompareSummary& summary,
@@ -284,19 +256,20 @@ void write_images(std::ostream& out, const CompareSummary& summary,
     if (i == 0 || row.folder != folder) {
       if (i > 0) out << "</table>\n";
       folder = row.folder;
-      out << "<h3>" << escape(folder) << "</h3>\n<table class=\"images\"><tr><th>frame</th>";
+      out << "<h3>" << xml_escape(folder) << "</h3>\n<table class=\"images\"><tr><th>frame</th>";
       for (const auto& variant : summary.variants)
-        out << "<th>" << escape(variant.name) << "</th>";
+        out << "<th>" << xml_escape(variant.name) << "</th>";
       out << "</tr>\n";
     }
-    out << "<tr><td>" << escape(row.stem) << "</td>";
+    out << "<tr><td>" << xml_escape(row.stem) << "</td>";
     for (std::size_t v = 0; v < summary.variants.size(); ++v) {
       const std::string& uri = v < row.data_uris.size() ? row.data_uris[v] : std::string();
       if (uri.empty()) {
         out << "<td>-</td>";
       } else {
         out << fmt::format(R"(<td><img src="{}" alt="{} {} {}"></td>)", uri,
-                           escape(summary.variants[v].name), escape(row.folder), escape(row.stem));
+                           xml_escape(summary.variants[v].name), xml_escape(row.folder),
+                           xml_escape(row.stem));
       }
     }
     out << "</tr>\n";
@@ -310,8 +283,8 @@ void write_compare_html(std::ostream& out, const CompareSummary& summary,
                         const std::vector<ImageRow>& images,
                         const std::vector<SweepPlotFile>& plots) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>facet compare: "
-      << escape(summary.graph) << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";
-  out << "<h1>facet compare: " << escape(summary.graph) << "</h1>\n";
+      << xml_escape(summary.graph) << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";
+  out << "<h1>facet compare: " << xml_escape(summary.graph) << "</h1>\n";
   out << fmt::format(
       "<p>{} variant(s) in one merged graph, {} frame(s); the first {} are warm-up and left out "
       "of every time. A frame's time is the sum of the processing stages a variant runs, its own "

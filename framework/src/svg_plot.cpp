@@ -18,39 +18,8 @@ constexpr int kBottom = 40;  // x tick labels and the x label
 constexpr int kMargin = 10;
 constexpr int kLegendRow = 18;
 
-const char* colour(std::size_t index) {
-  static constexpr const char* kColours[] = {"#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2",
-                                             "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
-  return kColours[index % std::size(kColours)];
-}
 constexpr const char* kBestColour = "#d62728";
 constexpr const char* kBandColour = "#59a14f";
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 struct Range {
   double lo = 0.0;
@@ -96,7 +65,7 @@ void write_legend(std::string& svg, const std::vector<LegendItem>& items, int to
     }
     if (item.kind == "line") {
       svg += fmt::format(R"(<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="{}" stroke-width="2"/>)",
-                         x, y - 4, x + 20, y - 4, colour(item.line));
+                         x, y - 4, x + 20, y - 4, series_colour(item.line));
     } else if (item.kind == "best") {
       svg += fmt::format(R"(<circle cx="{}" cy="{}" r="5" fill="none" stroke="{}" )"
                          R"(stroke-width="2"/>)",
@@ -106,7 +75,8 @@ void write_legend(std::string& svg, const std::vector<LegendItem>& items, int to
                          R"(fill-opacity="0.18"/>)",
                          x, y - 9, kBandColour);
     }
-    svg += fmt::format(R"(<text x="{}" y="{}">{}</text>)", x + 26, y, escape(item.label)) + "\n";
+    svg +=
+        fmt::format(R"(<text x="{}" y="{}">{}</text>)", x + 26, y, xml_escape(item.label)) + "\n";
     x += item_width(item);
   }
   svg += "</g>\n";
@@ -130,10 +100,10 @@ void write_panel(std::string& svg, const LinePlot& plot, const PlotPanel& panel,
   const double plot_width = kPanelWidth - kLeft - kRight;
   const double plot_height = kPanelHeight - kTop - kBottom;
   svg += fmt::format(R"svg(<g class="panel" data-title="{}" transform="translate({},{})">)svg",
-                     escape(panel.title), left, top) +
+                     xml_escape(panel.title), left, top) +
          "\n";
   svg += fmt::format(R"(<text x="{}" y="16" font-weight="bold">{}</text>)", kLeft,
-                     escape(panel.title)) +
+                     xml_escape(panel.title)) +
          "\n";
 
   double lo = INFINITY;
@@ -166,7 +136,7 @@ void write_panel(std::string& svg, const LinePlot& plot, const PlotPanel& panel,
     const double x2 = x_of(panel.band->to) + 3.0;
     svg += fmt::format(R"(<rect class="band" x="{:.1f}" y="{}" width="{:.1f}" height="{}" )"
                        R"(fill="{}" fill-opacity="0.18"><title>{}</title></rect>)",
-                       x1, kTop, x2 - x1, plot_height, kBandColour, escape(panel.band->note)) +
+                       x1, kTop, x2 - x1, plot_height, kBandColour, xml_escape(panel.band->note)) +
            "\n";
   }
 
@@ -195,7 +165,7 @@ void write_panel(std::string& svg, const LinePlot& plot, const PlotPanel& panel,
                      kLeft, kTop, plot_width, plot_height) +
          "\n";
   svg += fmt::format(R"(<text x="{:.1f}" y="{}" text-anchor="middle">{}</text>)",
-                     kLeft + plot_width / 2, kPanelHeight - 6, escape(plot.x_label)) +
+                     kLeft + plot_width / 2, kPanelHeight - 6, xml_escape(plot.x_label)) +
          "\n";
 
   for (std::size_t l = 0; l < panel.lines.size(); ++l) {
@@ -212,17 +182,17 @@ void write_panel(std::string& svg, const LinePlot& plot, const PlotPanel& panel,
     }
     svg += fmt::format(R"(<polyline class="line" fill="none" stroke="{}" stroke-width="1.5" )"
                        R"(points="{}"><title>{}</title></polyline>)",
-                       colour(l), points, escape(line.label)) +
+                       series_colour(l), points, xml_escape(line.label)) +
            "\n";
-    svg += fmt::format(R"(<g fill="{}">{}</g>)", colour(l), dots) + "\n";
+    svg += fmt::format(R"(<g fill="{}">{}</g>)", series_colour(l), dots) + "\n";
   }
   if (panel.best && panel.best->line < panel.lines.size() && panel.best->x < plot.x.size()) {
     const double y = panel.lines[panel.best->line].y[panel.best->x];
-    svg +=
-        fmt::format(R"(<circle class="best" cx="{:.1f}" cy="{:.1f}" r="5" fill="none" )"
-                    R"(stroke="{}" stroke-width="2"><title>{}</title></circle>)",
-                    x_of(plot.x[panel.best->x]), y_of(y), kBestColour, escape(panel.best->note)) +
-        "\n";
+    svg += fmt::format(R"(<circle class="best" cx="{:.1f}" cy="{:.1f}" r="5" fill="none" )"
+                       R"(stroke="{}" stroke-width="2"><title>{}</title></circle>)",
+                       x_of(plot.x[panel.best->x]), y_of(y), kBestColour,
+                       xml_escape(panel.best->note)) +
+           "\n";
   }
   svg += "</g>\n";
 }
@@ -277,11 +247,11 @@ std::string render_line_plot(const LinePlot& plot) {
       R"(<svg xmlns="http://www.w3.org/2000/svg" class="sweep" width="{0}" height="{1}" )"
       R"(viewBox="0 0 {0} {1}" font-family="sans-serif" font-size="11" role="img" )"
       R"(aria-label="{2}">)",
-      width, height, escape(plot.title));
-  svg += "\n<title>" + escape(plot.title) + "</title>\n";
+      width, height, xml_escape(plot.title));
+  svg += "\n<title>" + xml_escape(plot.title) + "</title>\n";
   svg += fmt::format(R"(<rect width="{}" height="{}" fill="#ffffff"/>)", width, height) + "\n";
   svg += fmt::format(R"(<text x="{}" y="22" font-size="15" font-weight="bold">{}</text>)", kMargin,
-                     escape(plot.title)) +
+                     xml_escape(plot.title)) +
          "\n";
   write_legend(svg, legend, legend_top, width);
   for (std::size_t p = 0; p < plot.panels.size(); ++p) {
@@ -292,6 +262,38 @@ std::string render_line_plot(const LinePlot& plot) {
   }
   svg += "</svg>\n";
   return svg;
+}
+
+const char* series_colour(std::size_t index) {
+  static constexpr const char* kColours[] = {"#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#76b7b2",
+                                             "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
+  return kColours[index % std::size(kColours)];
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace facet

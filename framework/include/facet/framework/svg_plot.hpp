@@ -56,4 +56,11 @@ std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 // Digits after the point that ticks `step` apart need: 0.02 -> 2, 5 -> 0.
 int tick_decimals(double step);
 
+// The colour of series `index` (ten fixed colours, then they repeat), the same in every plot of
+// the compare report and in the sweep plots, so a variant keeps its colour throughout.
+const char* series_colour(std::size_t index);
+
+// Text made safe for XML and HTML element content and attribute values (<, >, &, ", ').
+std::string xml_escape(const std::string& text);
+
 }  // namespace facet
