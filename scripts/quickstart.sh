@@ -4,7 +4,10 @@
 #   scripts/quickstart.sh run    run the main job, graphs/tabletop.yaml, on the bundled frames
 #   scripts/quickstart.sh test   run the whole test suite (ctest over GoogleTest)
 #   scripts/quickstart.sh asan   build with AddressSanitizer + UBSan (preset `asan`) and run the suite
-#   scripts/quickstart.sh tsan   build with ThreadSanitizer (preset `tsan`) and run the suite
+#   scripts/quickstart.sh tsan   build with ThreadSanitizer (preset `tsan`) the programs that run
+#                                threads (SDK, executors, the runtime API) and run them
+# The sanitizer presets register each test program as one CTest test (FACET_TEST_PER_PROGRAM):
+# under a sanitizer a process takes seconds to start, and the suite has over a thousand cases.
 # (tsan leaves function entry/exit uninstrumented: the ifunc resolvers of the AVX2 kernels run
 # before the sanitizer's symbols are bound; a report then shows the racing accesses, not callers)
 set -euo pipefail
@@ -21,6 +24,7 @@ packages=(
   libdeflate-dev
   libopenni2-dev libopencv-highgui-dev libxcb1-dev xvfb
   chromium
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-opencv python3-matplotlib
 )
 
 install_packages() {
@@ -63,8 +67,12 @@ case "$mode" in
     ;;
   tsan)
     install_packages
-    build tsan
-    ctest --preset tsan -j "$(nproc)"
+    # What starts threads: parallel_for and the workspace pool (SDK), the sequential and the
+    # pipelined executor (also on graphs/tabletop.yaml against each other), two Pipelines at once.
+    threaded=(facet_sdk_tests facet_executor_tests facet_runtime_tests)
+    cmake --preset tsan
+    cmake --build --preset tsan -j "$(nproc)" --target "${threaded[@]}"
+    ctest --preset tsan -j "$(nproc)" -R "^($(IFS='|'; echo "${threaded[*]}"))\$"
     ;;
   *)
     echo "usage: scripts/quickstart.sh run|test|asan|tsan" >&2
