@@ -68,6 +68,8 @@ struct RawGraph {
   std::vector<RawText> plugin_paths;
   std::vector<RawNode> nodes;
   std::vector<RawVariant> variants;
+  std::vector<RawInput> graph_inputs;   // `inputs:` name: node.port
+  std::vector<RawInput> graph_outputs;  // `outputs:` name: node.port
 
   RawNode* find_node(const std::string& id);
   const RawVariant* find_variant(const std::string& name) const;

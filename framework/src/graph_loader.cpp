@@ -167,6 +167,26 @@ NodeSpec resolve_node(const RawNode& raw, const ParamSubstitution& substitution,
   return node;
 }
 
+// `inputs:` / `outputs:` entries, with ${...} substituted and the reference split.
+std::vector<GraphPort> resolve_graph_ports(const std::vector<detail::RawInput>& raw,
+                                           const std::string& what,
+                                           const ParamSubstitution& substitution,
+                                           Diagnostics& diagnostics) {
+  std::vector<GraphPort> ports;
+  for (const auto& entry : raw) {
+    const auto text = substitution.expand(entry.ref.text, entry.ref.where, diagnostics);
+    if (!text) continue;
+    const auto reference = split_reference(*text);
+    if (!reference) {
+      diagnostics.error(entry.ref.where, "malformed reference '" + *text + "' for graph " + what +
+                                             " '" + entry.port + "': expected 'node.port'");
+      continue;
+    }
+    ports.push_back({entry.port, reference->first, reference->second, entry.ref.where});
+  }
+  return ports;
+}
+
 }  // namespace
 
 const NodeSpec* GraphSpec::find_node(const std::string& id) const {
@@ -223,6 +243,8 @@ GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& 
   for (const auto& node : raw.nodes) {
     graph.nodes.push_back(resolve_node(node, substitution, diagnostics));
   }
+  graph.inputs = resolve_graph_ports(raw.graph_inputs, "input", substitution, diagnostics);
+  graph.outputs = resolve_graph_ports(raw.graph_outputs, "output", substitution, diagnostics);
   return graph;
 }
 

@@ -8,8 +8,8 @@ namespace {
 
 constexpr const char* kFormatVersion = "1";
 
-const std::vector<std::string> kTopLevelKeys = {"facet",   "name",  "description", "params",
-                                                "plugins", "nodes", "variants"};
+const std::vector<std::string> kTopLevelKeys = {
+    "facet", "name", "description", "params", "plugins", "nodes", "inputs", "outputs", "variants"};
 const std::vector<std::string> kNodeKeys = {"stage", "in", "params"};
 const std::vector<std::string> kVariantKeys = {"extends", "replace", "set"};
 const std::vector<std::string> kPluginsKeys = {"paths"};
@@ -43,6 +43,10 @@ class DocumentReader {
       } else if (entry.key == "nodes") {
         has_nodes = true;
         graph.nodes = nodes(entry);
+      } else if (entry.key == "inputs") {
+        graph.graph_inputs = graph_ports(entry, "'inputs'");
+      } else if (entry.key == "outputs") {
+        graph.graph_outputs = graph_ports(entry, "'outputs'");
       } else if (entry.key == "variants") {
         graph.variants = variants(entry);
       } else {
@@ -126,6 +130,21 @@ class DocumentReader {
     if (!map_value(entry, what)) return out;
     for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
       if (auto ref = scalar(item, "input " + in_quotes(item.key))) out.push_back({item.key, *ref});
+    }
+    return out;
+  }
+
+  // `inputs:` / `outputs:` of the graph: name: node.port, the names being identifiers (a host
+  // program uses them as keys, Python as dictionary keys).
+  std::vector<RawInput> graph_ports(const MapEntry& entry, const std::string& what) {
+    std::vector<RawInput> out;
+    for (auto& port : inputs(entry, what)) {
+      if (!is_identifier(port.port)) {
+        diagnostics_.error(port.ref.where, "invalid name " + in_quotes(port.port) + " in " + what +
+                                               ": use letters, digits and '_'");
+        continue;
+      }
+      out.push_back(std::move(port));
     }
     return out;
   }

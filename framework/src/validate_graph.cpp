@@ -50,6 +50,8 @@ class GraphValidator {
       check_params(node);
       check_inputs(node);
     }
+    inputs_ = check_graph_ports(graph_.inputs, "input");
+    outputs_ = check_graph_ports(graph_.outputs, "output");
     for (const auto& cycle : detail::find_cycles(checked_.size(), dependencies_)) {
       std::vector<std::string> names;
       for (const std::size_t v : cycle.path)
@@ -215,6 +217,40 @@ class GraphValidator {
     node.inputs[input_index] = Connection{producer_index, output_index};
   }
 
+  // Graph inputs and outputs name an output port of a node, like a node's `in:` does.
+  std::vector<ValidatedGraphPort> check_graph_ports(const std::vector<GraphPort>& ports,
+                                                    const std::string& what) {
+    std::vector<ValidatedGraphPort> out;
+    for (const auto& port : ports) {
+      const auto node_it = std::find(node_ids_.begin(), node_ids_.end(), port.node);
+      if (node_it == node_ids_.end()) {
+        diagnostics_.error(port.where, "unknown node " + in_quotes(port.node) + " in graph " +
+                                           what + " " + in_quotes(port.name) +
+                                           suggestion_suffix(port.node, node_ids_, ""));
+        continue;
+      }
+      const auto node_index = static_cast<std::size_t>(node_it - node_ids_.begin());
+      const CheckedNode& node = checked_[node_index];
+      if (node.stage == nullptr) continue;  // reported with the node
+      const StageSpec& stage = node.stage->spec;
+      const PortSpec* output = stage.find_output(port.port);
+      if (output == nullptr) {
+        diagnostics_.error(
+            port.where,
+            "stage " + in_quotes(stage.name()) + " of node " + in_quotes(port.node) +
+                " has no output " + in_quotes(port.port) + " (graph " + what + " " +
+                in_quotes(port.name) + ")" +
+                suggestion_suffix(port.port, names_of(stage.outputs()), "its outputs are"));
+        note_replacement(*node.spec);
+        continue;
+      }
+      const auto output_index = static_cast<std::size_t>(output - stage.outputs().data());
+      out.push_back(
+          {port.name, Connection{node_index, output_index}, output->type_key, port.where});
+    }
+    return out;
+  }
+
   // After a port error on a node whose stage a variant replaced: the ports differ because of it.
   void note_replacement(const NodeSpec& spec) {
     if (spec.replaced_by_variant.empty()) return;
@@ -248,6 +284,12 @@ class GraphValidator {
       out.inputs = std::move(node.inputs);
       result.nodes.push_back(std::move(out));
     }
+    for (auto* ports : {&inputs_, &outputs_}) {
+      for (auto& port : *ports)
+        port.port.from_node = position[port.port.from_node];
+    }
+    result.inputs = std::move(inputs_);
+    result.outputs = std::move(outputs_);
     return result;
   }
 
@@ -257,6 +299,8 @@ class GraphValidator {
   std::vector<std::string> node_ids_;
   std::vector<CheckedNode> checked_;
   std::vector<detail::Dependency> dependencies_;
+  std::vector<ValidatedGraphPort> inputs_;
+  std::vector<ValidatedGraphPort> outputs_;
 };
 
 }  // namespace

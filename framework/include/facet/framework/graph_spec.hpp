@@ -47,6 +47,16 @@ struct NodeSpec {
   std::string replaced_by_variant;
 };
 
+// `inputs: {depth: source.depth}` and `outputs: {labels: objects.objects}`: a named port of the
+// graph as a whole, the output `node.port` that a host program feeds (an input: that node is then
+// not run) or reads (an output). See facet/pipeline.hpp.
+struct GraphPort {
+  std::string name;
+  std::string node;
+  std::string port;
+  SourceLocation where;  // of the value "source.depth"
+};
+
 struct GraphSpec {
   std::filesystem::path file;                 // as given; "<string>" for graphs parsed from memory
   std::string name;                           // `name:`, or the file's stem when absent
@@ -57,6 +67,8 @@ struct GraphSpec {
   std::map<std::string, std::string> params;  // graph params after --param overrides
   std::vector<std::filesystem::path> plugin_paths;  // `plugins.paths`, made absolute
   std::vector<NodeSpec> nodes;                      // in file order
+  std::vector<GraphPort> inputs;                    // `inputs:`, in file order
+  std::vector<GraphPort> outputs;                   // `outputs:`, in file order
 
   const NodeSpec* find_node(const std::string& id) const;
 };

@@ -28,10 +28,20 @@ struct ValidatedNode {
   SourceLocation where;
 };
 
+// A graph input or output (GraphPort) resolved to the output port it names.
+struct ValidatedGraphPort {
+  std::string name;
+  Connection port;       // the node (index into ValidatedGraph::nodes) and its output
+  std::string type_key;  // of that output
+  SourceLocation where;
+};
+
 struct ValidatedGraph {
   std::string name;
   std::filesystem::path file;
   std::vector<ValidatedNode> nodes;  // topological order: producers before consumers
+  std::vector<ValidatedGraphPort> inputs;
+  std::vector<ValidatedGraphPort> outputs;
 
   const ValidatedNode* find(const std::string& id) const;
 };
