@@ -113,8 +113,11 @@ TEST(SinksRun, TabletopCloudIsTabletopPlusTheCloudNode) {
   std::string cloud = from_nodes_on(read_file(kTabletopCloud));
   ASSERT_FALSE(tabletop.empty());
   const auto begin = cloud.find("  # One PLY per frame");
-  const auto end = cloud.find("\nvariants:\n");
   ASSERT_NE(begin, std::string::npos);
+  // The cloud node ends where the next line of the top level (not indented) begins.
+  auto end = cloud.find('\n', begin);
+  while (end != std::string::npos && end + 1 < cloud.size() && cloud[end + 1] == ' ')
+    end = cloud.find('\n', end + 1);
   ASSERT_NE(end, std::string::npos);
   EXPECT_NE(cloud.substr(begin, end - begin).find("stage: io.cloud"), std::string::npos);
   cloud.erase(begin, end + 1 - begin);

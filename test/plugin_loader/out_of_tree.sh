@@ -74,4 +74,26 @@ grep -Eq '"frames": *3\b' "$work/run.json" || fail "run.json does not report 3 f
 grep -A1 '"kept_ratio"' "$work/run.json" | grep -Eq '"mean": *0\.5\b' ||
   fail "run.json lacks the threshold's kept_ratio metric of 0.5"
 
+# A program of one's own against the installed facet::runtime (examples/cpp).
+example_build=$work/example-build
+step "configure examples/cpp against the installed package" \
+  cmake -S "$source_dir/examples/cpp" -B "$example_build" "${generator[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
+  -DCMAKE_CXX_FLAGS="${FACET_TEMPLATE_CXX_FLAGS:-}" \
+  -DCMAKE_EXE_LINKER_FLAGS="${FACET_TEMPLATE_LINKER_FLAGS:-}"
+step "build examples/cpp" cmake --build "$example_build" -j 2
+[[ -e $prefix/include/facet/pipeline.hpp ]] || fail "installed tree lacks facet/pipeline.hpp"
+# The installed graph, with the installed plugins found beside the installed runtime library.
+step "run examples/cpp" "$example_build/segment_frame" "$prefix/share/facet/graphs/tabletop.yaml" \
+  "$source_dir/data/mosd/depth/learn0.png"
+grep -Eq "^[1-9][0-9]* objects in" "$work/step.log" || fail "examples/cpp found no objects"
+grep -q "^object 1: " "$work/step.log" || fail "examples/cpp printed no object"
+
+# The installed Python package, when this build made one.
+python_package=$(find "$prefix" -path "*/facet/__init__.py" -print -quit)
+if [[ -n $python_package ]]; then
+  step "import the installed Python package" env PYTHONPATH="$(dirname "$(dirname "$python_package")")" \
+    "${FACET_TEST_PYTHON:-python3}" -c "import facet; names = [s['name'] for s in facet.stages()]; assert 'partition.graph' in names, names; print('python: OK')"
+fi
+
 echo "out-of-tree template: OK"
