@@ -3,13 +3,13 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "allocator_tuning.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "facet/framework/allocator_tuning.hpp"
 #include "facet/sdk_version.h"
 
 int main(int argc, char** argv) {
-  facet::cli::keep_frame_buffers_mapped();
+  facet::keep_frame_buffers_mapped();
   CLI::App app{
       "facet — model-free 3D scene segmentation from depth images, as YAML graphs of "
       "stage plugins.",

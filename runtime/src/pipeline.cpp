@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "facet/context.hpp"
+#include "facet/framework/allocator_tuning.hpp"
 #include "facet/framework/diagnostics.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_spec.hpp"
@@ -94,6 +95,7 @@ class Pipeline::Impl {
   // Loads the plugins the graph may need, checks the graph against them and plans the run.
   static std::unique_ptr<Impl> create(GraphSpec spec, Diagnostics& diagnostics,
                                       const PipelineOptions& options) {
+    if (options.keep_frame_buffers_mapped) keep_frame_buffers_mapped();
     Registry registry = load_registry(options.plugin_paths, spec.plugin_paths);
     ValidatedGraph graph = validate_graph(spec, registry, diagnostics);
     if (diagnostics.has_errors()) throw_graph_error(diagnostics);

@@ -41,6 +41,10 @@ struct PipelineOptions {
   std::vector<std::filesystem::path> plugin_paths;
   // Also run the nodes that feed no graph output (the file sinks: labels, objects, overlays).
   bool run_sinks = false;
+  // Keep frame-sized buffers mapped between frames (two glibc malloc options, process-wide, as
+  // the `facet` CLI sets them): with glibc's defaults each frame's 1-4 MB images are mapped and
+  // unmapped again, which made a tabletop frame 28 ms instead of 17.5 ms (docs/performance.md).
+  bool keep_frame_buffers_mapped = true;
 };
 
 // One problem found in the graph, as the command line prints it.

@@ -1,10 +1,10 @@
-#include "allocator_tuning.hpp"
+#include "facet/framework/allocator_tuning.hpp"
 
 #if __has_include(<malloc.h>)
 #include <malloc.h>  // glibc's mallopt and its M_* options; other C libraries may lack them
 #endif
 
-namespace facet::cli {
+namespace facet {
 
 void keep_frame_buffers_mapped() {
 #if defined(M_MMAP_THRESHOLD) && defined(M_TRIM_THRESHOLD)
@@ -18,4 +18,4 @@ void keep_frame_buffers_mapped() {
 #endif
 }
 
-}  // namespace facet::cli
+}  // namespace facet
