@@ -71,7 +71,7 @@ struct ParallelJob {
 }  // namespace
 
 struct PipelinedExecutor::Impl {
-  Impl(const ValidatedGraph& graph, PipelineOptions options);
+  Impl(const ValidatedGraph& graph, PipelinedExecutorOptions options);
 
   // The pool as stages borrow it (ProcessContext::parallel_for): chunks run on the calling
   // thread and on workers that find no stage call to make.
@@ -139,7 +139,7 @@ struct PipelinedExecutor::Impl {
   RunStats stats_;
 };
 
-PipelinedExecutor::Impl::Impl(const ValidatedGraph& graph, PipelineOptions options)
+PipelinedExecutor::Impl::Impl(const ValidatedGraph& graph, PipelinedExecutorOptions options)
     : graph_(graph),
       threads_(options.threads > 0
                    ? options.threads
@@ -586,7 +586,7 @@ RunStats PipelinedExecutor::Impl::run(const RunOptions& options) {
   return std::move(stats_);
 }
 
-PipelinedExecutor::PipelinedExecutor(const ValidatedGraph& graph, PipelineOptions options)
+PipelinedExecutor::PipelinedExecutor(const ValidatedGraph& graph, PipelinedExecutorOptions options)
     : impl_(std::make_unique<Impl>(graph, options)) {}
 
 PipelinedExecutor::~PipelinedExecutor() = default;

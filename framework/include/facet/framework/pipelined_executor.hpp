@@ -21,7 +21,7 @@
 
 namespace facet {
 
-struct PipelineOptions {
+struct PipelinedExecutorOptions {
   int threads = 0;    // 0: one per hardware thread
   int in_flight = 0;  // frames in the pipeline at once; 0: twice the threads
 };
@@ -30,7 +30,7 @@ class PipelinedExecutor {
  public:
   // Instantiates every stage (clonable stages once per thread); throws RunError naming the node
   // when a constructor fails. `graph` (and the Registry behind it) must outlive the executor.
-  PipelinedExecutor(const ValidatedGraph& graph, PipelineOptions options);
+  PipelinedExecutor(const ValidatedGraph& graph, PipelinedExecutorOptions options);
   ~PipelinedExecutor();
   PipelinedExecutor(const PipelinedExecutor&) = delete;
   PipelinedExecutor& operator=(const PipelinedExecutor&) = delete;
