@@ -15,6 +15,7 @@
 #include "facet/framework/compare_summary.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_merge.hpp"
+#include "option_checks.hpp"
 #include "report_images.hpp"
 #include "session.hpp"
 
@@ -300,23 +301,23 @@ void add_compare_command(CLI::App& app, int& exit_code) {
       ->add_option("--plateau-within", args->plateau_within,
                    "With --sweep: the plateau of F is the widest range of a parameter over which "
                    "F stays within this much of its best")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_number())
       ->capture_default_str();
   command->add_option("--frames,-n", args->frames, "Stop after N frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_integer());
   command->add_option("--warmup", args->warmup, "Leading frames left out of the timing")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   command->add_option("--out,-o", args->out_dir,
                       "Folder for compare.json, compare.csv, report.html and one sub-folder of "
                       "outputs per variant (default: out/compare/<graph name>)");
   command->add_option("--images", args->images, "Frames whose images go into the report")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   command
       ->add_option("--image-width", args->image_width,
                    "Width the report's images are shrunk to at most (pixels)")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_integer())
       ->capture_default_str();
   command->add_option("--param,-p", args->params,
                       "Override a graph parameter for every variant: name=value (repeatable; "

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "command_words.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "facet/framework/allocator_tuning.hpp"
@@ -36,8 +37,12 @@ int main(int argc, char** argv) {
   facet::cli::add_doctor_command(app, exit_code);
   facet::cli::add_compare_command(app, exit_code);
 
+  if (const auto answered = facet::cli::answer_command_word(app, argc, argv)) return *answered;
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ExtrasError& e) {
+    if (facet::cli::explain_unknown_options(app, argc, argv)) return facet::cli::kUsage;
+    return app.exit(e) == 0 ? facet::cli::kOk : facet::cli::kUsage;
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? facet::cli::kOk : facet::cli::kUsage;

@@ -15,6 +15,7 @@
 #include "facet/framework/run_report.hpp"
 #include "facet/framework/statistics.hpp"
 #include "facet/framework/trace_writer.hpp"
+#include "option_checks.hpp"
 #include "session.hpp"
 
 namespace facet::cli {
@@ -52,7 +53,7 @@ RunStats run_graph(const RunArgs& args, const ValidatedGraph& graph, const RunOp
     SequentialExecutor executor(graph);
     return executor.run(options);
   }
-  PipelinedExecutor executor(graph, PipelineOptions{threads, args.in_flight});
+  PipelinedExecutor executor(graph, PipelinedExecutorOptions{threads, args.in_flight});
   return executor.run(options);
 }
 
@@ -153,7 +154,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   add_graph_options(*command, args->graph);
   add_plugin_options(*command, args->plugins);
   command->add_option("--frames,-n", args->frames, "Stop after N frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_integer());
   command->add_flag("--profile", args->profile,
                     "Print per-stage median and p95 time (ms) after the run");
   command->add_option("--json", args->json_file,
@@ -165,11 +166,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->add_option("--threads,-j", args->threads,
                    "Threads that run stages (default: one per hardware thread); 1 runs one "
                    "frame at a time")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_integer());
   command
       ->add_option("--in-flight", args->in_flight,
                    "Frames in the pipeline at once (default: twice the threads)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_integer());
   command
       ->add_option("--executor", args->executor,
                    "sequential (one frame at a time, the reference), pipelined, or auto "
@@ -184,7 +185,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->add_option("--stall-ms", args->stall_ms,
                    "Report a stage call that runs longer than this, naming node and frame "
                    "(0: never)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_integer())
       ->capture_default_str();
   command->add_flag("--stall-abort", args->stall_abort,
                     "End the run with exit code 1 when a stall is reported");

@@ -20,16 +20,23 @@ std::optional<std::pair<std::string, std::string>> split_assignment(const std::s
 }  // namespace
 
 void add_plugin_options(CLI::App& command, PluginOptions& options) {
-  command.add_option("--plugin-path", options.plugin_paths,
-                     "Directory searched for plugins before all others (repeatable)");
+  // One value per occurrence: `--plugin-path DIR graph.yaml` must leave the graph to its place.
+  command
+      .add_option("--plugin-path", options.plugin_paths,
+                  "Directory searched for plugins before all others (repeatable)")
+      ->allow_extra_args(false);
 }
 
 void add_graph_options(CLI::App& command, GraphOptions& options) {
   command.add_option("graph", options.graph_file, "Graph file (YAML)")->required();
-  command.add_option("--param,-p", options.params,
-                     "Override a graph parameter: name=value (repeatable)");
-  command.add_option("--set,-s", options.sets,
-                     "Override a node parameter: node.param=value (repeatable, applied last)");
+  command
+      .add_option("--param,-p", options.params,
+                  "Override a graph parameter: name=value (repeatable)")
+      ->allow_extra_args(false);
+  command
+      .add_option("--set,-s", options.sets,
+                  "Override a node parameter: node.param=value (repeatable, applied last)")
+      ->allow_extra_args(false);
   command.add_option("--variant,-V", options.variant,
                      "Apply the variant NAME defined in the graph");
 }

@@ -23,6 +23,55 @@ TEST(Cli, UsageErrorsExitWith2) {
   EXPECT_EQ(run_cli("run x.yaml --frames=-3").exit_code, 2);
 }
 
+TEST(Cli, NumericOptionsSayWhatTheyExpect) {
+  const auto frames = run_cli("run x.yaml --frames -1");
+  EXPECT_EQ(frames.exit_code, 2);
+  EXPECT_NE(frames.out.find("--frames: must be a non-negative integer, got '-1'"),
+            std::string::npos)
+      << frames.out;
+  EXPECT_EQ(frames.out.find("1797693"), std::string::npos) << frames.out;  // no DBL_MAX
+  const auto threads = run_cli("run x.yaml --threads abc");
+  EXPECT_EQ(threads.exit_code, 2);
+  EXPECT_NE(threads.out.find("--threads: must be a non-negative integer, got 'abc'"),
+            std::string::npos)
+      << threads.out;
+  const auto width = run_cli("compare x.yaml --image-width 0");
+  EXPECT_EQ(width.exit_code, 2);
+  EXPECT_NE(width.out.find("must be a positive integer, got '0'"), std::string::npos) << width.out;
+}
+
+TEST(Cli, UnknownCommandsAndOptionsGetTheClosestName) {
+  const auto command = run_cli("valdate graphs/tabletop.yaml");
+  EXPECT_EQ(command.exit_code, 2);
+  EXPECT_NE(command.out.find("unknown command 'valdate'; did you mean 'validate'?"),
+            std::string::npos)
+      << command.out;
+  EXPECT_NE(command.out.find("commands: run, validate"), std::string::npos) << command.out;
+  const auto option = run_cli("run --frmes 3 graphs/tabletop.yaml");
+  EXPECT_EQ(option.exit_code, 2);
+  EXPECT_NE(option.out.find("unknown option '--frmes' of `facet run`; did you mean '--frames'?"),
+            std::string::npos)
+      << option.out;
+}
+
+TEST(Cli, HelpIsACommandToo) {
+  const auto help = run_cli("help");
+  EXPECT_EQ(help.exit_code, 0) << help.out;
+  EXPECT_NE(help.out.find("Exit codes:"), std::string::npos) << help.out;
+  const auto run_help = run_cli("help run");
+  EXPECT_EQ(run_help.exit_code, 0) << run_help.out;
+  EXPECT_NE(run_help.out.find("--frames"), std::string::npos) << run_help.out;
+  EXPECT_EQ(run_cli("help frobnicate").exit_code, 2);
+}
+
+TEST(Cli, PluginPathLeavesTheGraphArgumentInPlace) {
+  TempDir out("facet-cli-plugin-path");
+  const auto result = run_cli("run --plugin-path " + shell_quote((source_dir() / "data").string()) +
+                              " " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()) +
+                              " --frames 1 --param output=" + shell_quote(out.path().string()));
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+}
+
 TEST(Cli, ListShowsBundledStagesWithoutAnyEnvironment) {
   const auto result = run_cli("list", "env -u FACET_PLUGIN_PATH");
   EXPECT_EQ(result.exit_code, 0) << result.out;
