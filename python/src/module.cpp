@@ -268,7 +268,9 @@ class PyPipeline {
     {
       py::gil_scoped_release release;
       result = pipeline_->process(inputs);
-      inputs.clear();  // the host's arrays are let go before the GIL is taken back
+      // This call's references go now; the pipeline itself keeps the frame's input packets until
+      // the next call, so the last reference may be dropped there, without the GIL (ArrayOwner).
+      inputs.clear();
     }
     ++frames_;
     if (result.end_of_stream) return py::none();
