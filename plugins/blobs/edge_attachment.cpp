@@ -13,7 +13,8 @@ constexpr std::int32_t kTooSmall = -1;
 
 class EdgeGrid {
  public:
-  EdgeGrid(cv::Mat& labels, const cv::Mat& edges, const cv::Mat& xyz, const NeighbourGate& gate)
+  EdgeGrid(cv::Mat& labels, const cv::Mat& edges, const cv::Mat& xyz,
+           const algo::NeighbourGate& gate)
       : rows_(edges.rows),
         cols_(edges.cols),
         label_(labels.ptr<std::int32_t>()),
@@ -63,7 +64,7 @@ class EdgeGrid {
   std::int32_t* label_;
   const std::uint8_t* edge_;
   const float* point_;
-  NeighbourGate gate_;
+  algo::NeighbourGate gate_;
 };
 
 // Ids back in raster order of each blob's first pixel (attached edge pixels may come before a
@@ -96,7 +97,7 @@ void restore_raster_order(EuclideanRegions& blobs) {
 
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
-                                  const NeighbourGate& gate, std::int64_t min_size_px) {
+                                  const algo::NeighbourGate& gate, std::int64_t min_size_px) {
   EdgeGrid grid(blobs.labels, edges, xyz, gate);
   std::int32_t* label = grid.label();
   EdgeAttachment result;

@@ -28,6 +28,6 @@ struct EdgeAttachment {
 // there are).
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
-                                  const NeighbourGate& gate, std::int64_t min_size_px);
+                                  const algo::NeighbourGate& gate, std::int64_t min_size_px);
 
 }  // namespace facet::blobs

@@ -44,7 +44,7 @@ class PixelSets {
 }  // namespace
 
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
-                                        const NeighbourGate& gate, std::int64_t min_size_px) {
+                                        const algo::NeighbourGate& gate, std::int64_t min_size_px) {
   const int rows = mask.rows;
   const int cols = mask.cols;
   const std::size_t total = mask.total();

@@ -6,7 +6,7 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
-#include "blobs/neighbour_gate.hpp"
+#include "facet/algo/neighbour_gate.hpp"
 
 namespace facet::blobs {
 
@@ -22,6 +22,6 @@ struct EuclideanRegions {
 // continuous, same size. Neighbours join when the gate finds them close. Regions under
 // min_size_px are left at 0.
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
-                                        const NeighbourGate& gate, std::int64_t min_size_px);
+                                        const algo::NeighbourGate& gate, std::int64_t min_size_px);
 
 }  // namespace facet::blobs

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "blobs/blob_support.hpp"
-#include "blobs/neighbour_gate.hpp"
+#include "facet/algo/neighbour_gate.hpp"
 #include "facet/stage.hpp"
 
 namespace facet::blobs {
@@ -19,7 +19,7 @@ class GrowBlobs final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
-  NeighbourGate gate_;
+  algo::NeighbourGate gate_;
   std::int64_t min_size_px_;
   bool edge_pixels_;
   BackgroundBlobRule rule_;

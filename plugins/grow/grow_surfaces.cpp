@@ -5,10 +5,10 @@
 #include <string>
 #include <utility>
 
+#include "facet/algo/patch_contacts.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
-#include "grow/patch_contacts.hpp"
 #include "grow/pixel_classes.hpp"
 #include "grow/surface_regions.hpp"
 
@@ -95,7 +95,7 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   SurfaceRegions regions = regions_.label(classes, connectivity_, min_size_px_);
   const AssignmentResult assigned = assignment_.assign(regions.labels, classes, xyz);
 
-  PatchAdjacency adjacency = find_patch_contacts(regions.labels, regions.count);
+  PatchAdjacency adjacency = algo::find_patch_contacts(regions.labels, regions.count);
   static_cast<FrameHeader&>(adjacency) = points;
   LabelImage patches;
   static_cast<FrameHeader&>(patches) = points;

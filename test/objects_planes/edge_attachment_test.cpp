@@ -29,7 +29,7 @@ cv::Mat flat_points(int rows, int cols, float z_m) {
 }
 
 EuclideanRegions blobs_of(const cv::Mat& patch_mask, const cv::Mat& xyz) {
-  return grow_euclidean_regions(patch_mask, xyz, facet::blobs::NeighbourGate(kDistanceM, 0.0F), 1);
+  return grow_euclidean_regions(patch_mask, xyz, facet::algo::NeighbourGate(kDistanceM, 0.0F), 1);
 }
 
 // attach_edge_pixels with the edge pixels listed in raster order, as grow.blobs lists them.
@@ -39,8 +39,8 @@ facet::blobs::EdgeAttachment attach(EuclideanRegions& blobs, const cv::Mat& edge
   for (int i = 0; i < static_cast<int>(edges.total()); ++i) {
     if (edges.ptr<std::uint8_t>()[i] != 0) pixels.push_back(i);
   }
-  return attach_edge_pixels(blobs, edges, pixels, xyz,
-                            facet::blobs::NeighbourGate(kDistanceM, 0.0F), min_size_px);
+  return attach_edge_pixels(blobs, edges, pixels, xyz, facet::algo::NeighbourGate(kDistanceM, 0.0F),
+                            min_size_px);
 }
 
 TEST(EdgeAttachment, AnEdgeBandBetweenTwoBlobsIsSharedAndKeepsThemApart) {

@@ -1,6 +1,6 @@
 // Delta_blob grows with the square of the depth beyond distance_growth_start_m, so that a far
 // surface in a depth camera's depth steps stays one blob.
-#include "blobs/neighbour_gate.hpp"
+#include "facet/algo/neighbour_gate.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 namespace facet::test {
 namespace {
 
-using blobs::NeighbourGate;
+using algo::NeighbourGate;
 
 TEST(NeighbourGate, GrowsWithTheSquareOfTheDepthBeyondItsStart) {
   const NeighbourGate gate(0.01F, 1.2F);

@@ -1,6 +1,7 @@
 #pragma once
 // When two neighbouring pixels' points are close enough to be one blob (paper sec. II-B e:
-// Delta_blob), shared by the region growing and the edge attachment.
+// Delta_blob), shared by grow.blobs' region growing and edge attachment and by planes.support's
+// split of what a plane leaves of a patch.
 //
 // A depth camera's depth step grows with the square of the depth: a Kinect's disparity steps
 // are 3 mm apart at 1 m, 11 mm at 2 m and 26 mm at 3 m, and stereo cameras behave alike. A fixed
@@ -8,7 +9,7 @@
 // and every object there falls apart below the blob size. So beyond `growth_start_m` the
 // distance grows with the square of the nearer point's depth.
 
-namespace facet::blobs {
+namespace facet::algo {
 
 class NeighbourGate {
  public:
@@ -33,4 +34,4 @@ class NeighbourGate {
   float inverse_start_m_;
 };
 
-}  // namespace facet::blobs
+}  // namespace facet::algo

@@ -1,11 +1,11 @@
-#include "grow/patch_contacts.hpp"
+#include "facet/algo/patch_contacts.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
-namespace facet::grow {
+namespace facet::algo {
 namespace {
 
 // Contacts arrive in long runs of the same pair along a border; counting runs as they come
@@ -90,4 +90,4 @@ PatchAdjacency find_patch_contacts(const cv::Mat& labels, std::int32_t count) {
   return adjacency;
 }
 
-}  // namespace facet::grow
+}  // namespace facet::algo

@@ -6,7 +6,7 @@
 
 #include "facet/types/patches.hpp"
 
-namespace facet::grow {
+namespace facet::algo {
 
 // Two patches a != b (both non-zero) touch when a pixel of a has a pixel of b among its 8
 // neighbours. contact_px counts the touching 8-neighbour pixel pairs, each unordered pair of
@@ -14,4 +14,4 @@ namespace facet::grow {
 // and are sorted. The header of the result is left for the caller to fill.
 PatchAdjacency find_patch_contacts(const cv::Mat& labels, std::int32_t count);
 
-}  // namespace facet::grow
+}  // namespace facet::algo
