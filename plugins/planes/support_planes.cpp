@@ -8,9 +8,11 @@
 #include <utility>
 #include <vector>
 
+#include "facet/algo/patch_contacts.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
+#include "facet/types/patches.hpp"
 #include "planes/scene_model.hpp"
 #include "planes/table_outline.hpp"
 #include "planes/world_up.hpp"
@@ -131,7 +133,10 @@ StageSpec SupportPlaneStage::spec() {
              "so a table is accepted once the floor and walls behind it are. Box faces fail: "
              "the rest of their box lies behind them. Then, largest first, every valid point "
              "not yet taken within distance_m of a support plane joins it, also out of its "
-             "patch, except the points of object faces. Patches left with fewer than "
+             "patch, except the points of object faces. What a plane leaves of a patch is split "
+             "into its connected pieces (8-neighbours closer than split_max_distance_m), each a "
+             "patch of its own: a table patch that ran onto the tops of objects leaves one "
+             "piece per top, not one patch spanning them. Patches left with fewer than "
              "min_segment_px points are dropped. The table's visible extent (a convex outline) "
              "goes with the planes, for grow.blobs.")
       .input<LabelImage>("patches", "Surface patches, CV_32SC1 ids 1..count (grow.surfaces).")
@@ -143,7 +148,12 @@ StageSpec SupportPlaneStage::spec() {
       .output<LabelImage>("plane_labels", "CV_32SC1 plane id per pixel, 0 = on no plane.")
       .output<LabelImage>("patches",
                           "The input patches with plane points and dropped segments set to 0; "
-                          "ids and count unchanged (ids may now be unused).")
+                          "ids kept (ids may now be unused); the pieces a plane cut off a "
+                          "patch numbered from the input's count + 1 on.")
+      .output<PatchAdjacency>("adjacency",
+                              "Pairs (a < b, sorted) of the output patches that touch "
+                              "(8-neighbours), as grow.surfaces' adjacency, for the patches "
+                              "left.")
       .param("distance_m", 0.010,
              "delta: a point closer than this to a support plane belongs to it. RANSAC scores "
              "its hypotheses at delta / 2.",
@@ -275,6 +285,19 @@ StageSpec SupportPlaneStage::spec() {
       .param("min_segment_px", 20,
              "N_seg: patches left with fewer points than this are dropped (set to 0).",
              {.unit = "px", .min = 0.0, .max = 1.0e6, .origin = "paper: N_seg = 5 at 320x240, x4"})
+      .param("split_max_distance_m", 0.01,
+             "Gate of the split of what a plane leaves of a patch: two of its pixels are one "
+             "piece when they are 8-neighbours closer than this in 3D (growing with the square "
+             "of the depth beyond split_growth_start_m).",
+             {.unit = "m",
+              .min = 0.0,
+              .max = 1.0,
+              .origin = "grow.blobs' Delta_blob (the same neighbour linkage)"})
+      .param(
+          "split_growth_start_m", 1.2,
+          "Beyond this depth split_max_distance_m grows with the square of the depth; 0 "
+          "keeps it fixed.",
+          {.unit = "m", .min = 0.0, .max = 100.0, .origin = "grow.blobs' distance_growth_start_m"})
       .param("seed", 1, "Seed of the RANSAC random numbers, reset every frame.",
              {.min = 0.0, .max = 4294967295.0, .origin = "any; fixed for reproducible results"})
       .concurrency(Concurrency::clonable);
@@ -289,6 +312,8 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
       horizontal_max_deg_(params.get_double("horizontal_max_deg")),
       up_prior_max_deg_(params.get_double("up_prior_max_deg")),
       min_segment_px_(params.get_int("min_segment_px")),
+      split_gate_(static_cast<float>(params.get_double("split_max_distance_m")),
+                  static_cast<float>(params.get_double("split_growth_start_m"))),
       seed_(static_cast<std::uint32_t>(params.get_int("seed"))) {
   const auto distance_m = static_cast<float>(params.get_double("distance_m"));
   fit_rule_.ransac_iterations = static_cast<int>(params.get_int("ransac_iterations"));
@@ -480,10 +505,25 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     left[i] = static_cast<std::int32_t>(slot);
     ++left_px[slot];
   }
-  // Segments too small to matter; slot 0 (no patch) is never kept.
-  std::vector<char> too_small(patch_slots, 0);
-  bool small_segments = false;
+  // A patch that gave points to a plane and kept some may have kept several pieces (the table's
+  // patch run onto object tops through gaps in the edges): one patch each.
+  std::vector<char> cut(patch_slots, 0);
+  bool any_cut = false;
   for (std::size_t slot = 1; slot < patch_slots; ++slot) {
+    cut[slot] = left_px[slot] > 0 && left_px[slot] < patch_px[slot] ? 1 : 0;
+    any_cut = any_cut || cut[slot] != 0;
+  }
+  if (any_cut) {
+    remaining.count = pieces_.split(remaining.labels, patches.count, cut, xyz, split_gate_);
+    left_px.assign(static_cast<std::size_t>(remaining.count) + 1, 0);
+    for (std::size_t i = 0; i < total; ++i)
+      ++left_px[static_cast<std::size_t>(left[i])];
+  }
+  // Segments too small to matter; slot 0 (no patch) is never kept.
+  const std::size_t left_slots = left_px.size();
+  std::vector<char> too_small(left_slots, 0);
+  bool small_segments = false;
+  for (std::size_t slot = 1; slot < left_slots; ++slot) {
     const std::int64_t size = left_px[slot];
     too_small[slot] = size > 0 && size < min_segment_px_;
     small_segments = small_segments || too_small[slot] != 0;
@@ -527,7 +567,10 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   plane_labels.count = static_cast<std::int32_t>(planes.planes.size());
   ctx.output("planes", std::move(planes));
   ctx.output("plane_labels", std::move(plane_labels));
+  PatchAdjacency adjacency = algo::find_patch_contacts(remaining.labels, remaining.count);
+  static_cast<FrameHeader&>(adjacency) = patches;
   ctx.output("patches", std::move(remaining));
+  ctx.output("adjacency", std::move(adjacency));
 }
 
 }  // namespace facet::planes

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "facet/algo/label_pieces.hpp"
+#include "facet/algo/neighbour_gate.hpp"
 #include "facet/stage.hpp"
 #include "planes/plane_fit.hpp"
 #include "planes/scene_model.hpp"
@@ -32,6 +34,8 @@ class SupportPlaneStage final : public Stage {
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto
   std::int64_t min_segment_px_;
+  algo::NeighbourGate split_gate_;
+  algo::LabelPieces pieces_;  // its buffers are kept from frame to frame
   std::uint32_t seed_;
 };
 

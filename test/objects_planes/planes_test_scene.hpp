@@ -13,6 +13,7 @@
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
+#include "facet/types/patches.hpp"
 #include "planes/support_planes.hpp"
 #include "synthetic_scene.hpp"
 #include "tabletop_frame.hpp"
@@ -61,6 +62,7 @@ struct PlanesResult {
   LabelImage plane_labels;
   LabelImage patches;
   std::vector<std::string> warnings;
+  PatchAdjacency adjacency;
 };
 
 inline PlanesResult run_planes(const LabelImage& patches, const PointImage& points,
@@ -70,7 +72,8 @@ inline PlanesResult run_planes(const LabelImage& patches, const PointImage& poin
   runner.set_input("points", Packet::make(points));
   runner.run();
   return {runner.output<SupportPlanes>("planes"), runner.output<LabelImage>("plane_labels"),
-          runner.output<LabelImage>("patches"), runner.warnings()};
+          runner.output<LabelImage>("patches"), runner.warnings(),
+          runner.output<PatchAdjacency>("adjacency")};
 }
 
 inline LabelImage run_blobs(const LabelImage& patches, const PointImage& points,

@@ -297,5 +297,68 @@ TEST(SupportPlanes, SameSeedSameResult) {
   EXPECT_EQ(cv::countNonZero(blobs_a.labels != blobs_b.labels), 0);
 }
 
+// A table patch that ran onto the tops of two boxes (through gaps in the normal edges) leaves
+// one piece per top when the table takes its points: two patches, not one spanning both boxes,
+// each touching its own box's sides in the adjacency that goes with them.
+TEST(SupportPlanes, WhatTheTableLeavesOfItsPatchIsOnePatchPerPiece) {
+  SceneBuilder builder;
+  builder.plane(kTable.table_point, kTable.up);
+  const std::vector<double> half_height_m = {0.03, 0.04};
+  kTable.box_on_table(builder, -0.15, 0.05, {0.05, 0.05, half_height_m[0]});  // object 2
+  kTable.box_on_table(builder, 0.12, 0.05, {0.05, 0.05, half_height_m[1]});   // object 3
+  const RenderedScene scene = builder.render();
+  const PointImage points = scene_points(scene);
+  LabelImage patches = face_patches(scene, points);
+  const int table_patch = majority_label(scene.object, 1, patches.labels);
+  ASSERT_NE(table_patch, 0);
+  // The boxes' tops (within 2 mm of their height) join the table's patch.
+  cv::Mat top = cv::Mat::zeros(scene.object.size(), CV_32SC1);
+  for (int v = 0; v < top.rows; ++v) {
+    for (int u = 0; u < top.cols; ++u) {
+      const int object = scene.object.at<int>(v, u);
+      if (object < 2) continue;
+      const cv::Vec3f p = points.points.at<cv::Vec3f>(v, u);
+      const double height_m =
+          (Eigen::Vector3d(p[0], p[1], p[2]) - kTable.table_point).dot(kTable.up);
+      if (height_m < 2.0 * half_height_m[static_cast<std::size_t>(object - 2)] - 0.002) continue;
+      patches.labels.at<int>(v, u) = table_patch;
+      top.at<int>(v, u) = object;
+    }
+  }
+  ASSERT_GT(pixels_of(top, 2), 500);
+  ASSERT_GT(pixels_of(top, 3), 500);
+
+  const PlanesResult run = run_planes(patches, points);
+  const int top_2 = majority_label(top, 2, run.patches.labels);
+  const int top_3 = majority_label(top, 3, run.patches.labels);
+  ASSERT_NE(top_2, 0);
+  ASSERT_NE(top_3, 0);
+  EXPECT_NE(top_2, top_3);
+  EXPECT_GT(run.patches.count, patches.count);
+  for (int object = 2; object <= 3; ++object) {
+    const int id = object == 2 ? top_2 : top_3;
+    EXPECT_EQ(count_where(top, object, run.patches.labels, id), pixels_of(top, object));
+  }
+  // Each top touches a face of its own box, and the two tops do not touch.
+  const auto touches = [&](int a, int b) {
+    const auto pair = std::make_pair(std::min(a, b), std::max(a, b));
+    return std::find(run.adjacency.pairs.begin(), run.adjacency.pairs.end(), pair) !=
+           run.adjacency.pairs.end();
+  };
+  EXPECT_FALSE(touches(top_2, top_3));
+  for (int object = 2; object <= 3; ++object) {
+    const int id = object == 2 ? top_2 : top_3;
+    bool touches_own_side = false;
+    for (int v = 0; v < top.rows; ++v) {
+      for (int u = 0; u < top.cols; ++u) {
+        const int label = run.patches.labels.at<int>(v, u);
+        if (scene.object.at<int>(v, u) == object && label != 0 && label != id)
+          touches_own_side = touches_own_side || touches(id, label);
+      }
+    }
+    EXPECT_TRUE(touches_own_side) << "object " << object;
+  }
+}
+
 }  // namespace
 }  // namespace facet::test
