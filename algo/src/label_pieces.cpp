@@ -32,16 +32,29 @@ std::int32_t LabelPieces::split(cv::Mat& labels, std::int32_t count, const std::
   };
   const auto valid = [&](std::int32_t i) { return std::isfinite(xyz[3 * i + 2]); };
 
-  // Union-find over the marked pixels; a root is always the piece's first pixel in raster order
-  // (the smaller index wins), so the result does not depend on the order of the joins.
-  parent_.assign(static_cast<std::size_t>(total), -1);
-  bool any = false;
+  // The marked pixels in raster order, and for each its place in that list (written only at
+  // marked pixels and read only at pixels whose label is marked: no clearing per call). The
+  // work after this one scan is proportional to the marked pixels, usually a small part of the
+  // image (what a plane left of a patch).
+  pixels_.clear();
+  if (compact_.size() < static_cast<std::size_t>(total))
+    compact_.resize(static_cast<std::size_t>(total));
   for (std::int32_t i = 0; i < total; ++i) {
-    const std::int32_t id = label[i];
-    if (!marked(id)) continue;
-    any = true;
-    parent_[static_cast<std::size_t>(i)] = i;
+    if (!marked(label[i])) continue;
+    compact_[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(pixels_.size());
+    pixels_.push_back(i);
+  }
+  if (pixels_.empty()) return count;
+
+  // Union-find over the marked pixels; a root is always its piece's first pixel in raster order
+  // (the smaller index wins), so the result does not depend on the order of the joins.
+  const auto n = static_cast<std::int32_t>(pixels_.size());
+  parent_.resize(static_cast<std::size_t>(n));
+  for (std::int32_t k = 0; k < n; ++k) {
+    parent_[static_cast<std::size_t>(k)] = k;
+    const std::int32_t i = pixels_[static_cast<std::size_t>(k)];
     if (!valid(i)) continue;
+    const std::int32_t id = label[i];
     const int x = i % width;
     // The neighbours already visited: west, and north-west, north, north-east.
     const std::int32_t before[4] = {x > 0 ? i - 1 : -1, x > 0 ? i - width - 1 : -1, i - width,
@@ -49,37 +62,36 @@ std::int32_t LabelPieces::split(cv::Mat& labels, std::int32_t count, const std::
     for (const std::int32_t j : before) {
       if (j < 0 || label[j] != id || !valid(j)) continue;
       if (!gate.close(xyz + 3 * i, xyz + 3 * j)) continue;
-      std::int32_t a = find(i);
-      std::int32_t b = find(j);
+      std::int32_t a = find(k);
+      std::int32_t b = find(compact_[static_cast<std::size_t>(j)]);
       if (a == b) continue;
       if (a < b) std::swap(a, b);
       parent_[static_cast<std::size_t>(a)] = b;
     }
   }
-  if (!any) return count;
 
-  size_px_.assign(static_cast<std::size_t>(total), 0);
-  for (std::int32_t i = 0; i < total; ++i) {
-    if (parent_[static_cast<std::size_t>(i)] >= 0) ++size_px_[static_cast<std::size_t>(find(i))];
-  }
+  size_px_.assign(static_cast<std::size_t>(n), 0);
+  for (std::int32_t k = 0; k < n; ++k)
+    ++size_px_[static_cast<std::size_t>(find(k))];
   largest_.assign(split.size(), -1);
-  for (std::int32_t i = 0; i < total; ++i) {
-    if (parent_[static_cast<std::size_t>(i)] != i) continue;  // roots only, in raster order
-    std::int32_t& best = largest_[static_cast<std::size_t>(label[i])];
+  for (std::int32_t k = 0; k < n; ++k) {
+    if (parent_[static_cast<std::size_t>(k)] != k) continue;  // roots only, in raster order
+    std::int32_t& best =
+        largest_[static_cast<std::size_t>(label[pixels_[static_cast<std::size_t>(k)]])];
     if (best < 0 ||
-        size_px_[static_cast<std::size_t>(i)] > size_px_[static_cast<std::size_t>(best)])
-      best = i;
+        size_px_[static_cast<std::size_t>(k)] > size_px_[static_cast<std::size_t>(best)])
+      best = k;
   }
-  new_id_.assign(static_cast<std::size_t>(total), 0);
+  // New ids go to the roots (size_px_ is reused for them); then every pixel takes its root's.
   std::int32_t next = count;
-  for (std::int32_t i = 0; i < total; ++i) {
-    if (parent_[static_cast<std::size_t>(i)] != i) continue;
-    new_id_[static_cast<std::size_t>(i)] =
-        largest_[static_cast<std::size_t>(label[i])] == i ? label[i] : ++next;
+  for (std::int32_t k = 0; k < n; ++k) {
+    if (parent_[static_cast<std::size_t>(k)] != k) continue;
+    const std::int32_t id = label[pixels_[static_cast<std::size_t>(k)]];
+    size_px_[static_cast<std::size_t>(k)] =
+        largest_[static_cast<std::size_t>(id)] == k ? id : ++next;
   }
-  for (std::int32_t i = 0; i < total; ++i) {
-    if (parent_[static_cast<std::size_t>(i)] >= 0)
-      label[i] = new_id_[static_cast<std::size_t>(find(i))];
+  for (std::int32_t k = 0; k < n; ++k) {
+    label[pixels_[static_cast<std::size_t>(k)]] = size_px_[static_cast<std::size_t>(find(k))];
   }
   return next;
 }

@@ -26,10 +26,11 @@ class LabelPieces {
  private:
   std::int32_t find(std::int32_t i);
 
-  std::vector<std::int32_t> parent_;  // per pixel: union-find parent, -1 = not split
-  std::vector<std::int32_t> size_px_;
+  std::vector<std::int32_t> pixels_;   // the pixels to split, in raster order
+  std::vector<std::int32_t> compact_;  // per pixel: its index in pixels_ (valid where marked)
+  std::vector<std::int32_t> parent_;   // per marked pixel: union-find parent
+  std::vector<std::int32_t> size_px_;  // per root: its piece's size, then its new id
   std::vector<std::int32_t> largest_;  // per id: the root of its largest piece
-  std::vector<std::int32_t> new_id_;   // per root
 };
 
 }  // namespace facet::algo
