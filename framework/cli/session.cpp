@@ -55,8 +55,13 @@ Registry load_registry(const PluginOptions& plugins,
   return registry;
 }
 
-std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
-                                               const GraphOptions& graph_options) {
+namespace {
+
+// Loads and validates the graph with `registry`, or with the plugins its file names when
+// `registry` is null. Prints diagnostics (warnings too) to stderr.
+std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
+                                       const GraphOptions& graph_options,
+                                       const Registry* registry) {
   auto loaded = std::make_unique<LoadedGraph>();
   Diagnostics diagnostics;
   LoadOptions options;
@@ -79,20 +84,40 @@ std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
   loaded->spec = load_graph_file(graph_options.graph_file, options, diagnostics);
   // Validation runs even after loading errors (it skips what the loader already reported), so a
   // user sees every problem of the file at once, like a compiler.
-  loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);
-  loaded->graph = validate_graph(loaded->spec, loaded->registry, diagnostics);
+  if (registry == nullptr) loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);
+  const Registry& stages = registry != nullptr ? *registry : loaded->registry;
+  loaded->graph = validate_graph(loaded->spec, stages, diagnostics);
   diagnostics.print(std::cerr);  // warnings too
   if (diagnostics.has_errors()) {
     bool missing_stage = false;
     for (const auto& node : loaded->spec.nodes) {
-      if (loaded->registry.find(node.stage) == nullptr) missing_stage = true;
+      if (stages.find(node.stage) == nullptr) missing_stage = true;
     }
-    const bool plugin_failed = !loaded->registry.failures().empty();
+    const bool plugin_failed = !stages.failures().empty();
     loaded->exit_code = (missing_stage && plugin_failed) ? kPluginFailure : kInvalidGraph;
     std::cerr << diagnostics.error_count() << " error(s) in " << graph_options.graph_file.string()
+              << (graph_options.variant.empty() ? "" : ", variant " + graph_options.variant)
               << "\n";
   }
   return loaded;
+}
+
+}  // namespace
+
+std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
+                                               const GraphOptions& graph_options) {
+  return load_with(plugins, graph_options, nullptr);
+}
+
+std::vector<VariantCheck> validate_variants(const LoadedGraph& base, const PluginOptions& plugins,
+                                            const GraphOptions& graph_options) {
+  std::vector<VariantCheck> checks;
+  for (const std::string& variant : base.spec.variants) {
+    GraphOptions options = graph_options;
+    options.variant = variant;
+    checks.push_back({variant, load_with(plugins, options, &base.registry)->exit_code});
+  }
+  return checks;
 }
 
 }  // namespace facet::cli

@@ -48,4 +48,13 @@ struct LoadedGraph {
 std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
                                                const GraphOptions& graph_options);
 
+// Validates every variant the base graph's file defines, with the base's plugins and the same
+// --param/--set, printing each variant's diagnostics; one entry per variant, in file order.
+struct VariantCheck {
+  std::string variant;
+  int exit_code = 0;
+};
+std::vector<VariantCheck> validate_variants(const LoadedGraph& base, const PluginOptions& plugins,
+                                            const GraphOptions& graph_options);
+
 }  // namespace facet::cli

@@ -126,6 +126,36 @@ TEST(Cli, InvalidGraphExitsWith3AndPointsAtTheLine) {
   EXPECT_NE(result.out.find("error:"), std::string::npos) << result.out;
 }
 
+// A variant's `set:` or `replace:` can be broken while the base graph is fine; validate checks
+// every variant unless --variant picks one.
+TEST(Cli, ValidateChecksEveryVariant) {
+  TempDir dir("facet-cli-variants");
+  const auto graph = dir.path() / "variants.yaml";
+  std::ofstream(graph) << "facet: 1\nname: variants\nnodes:\n"
+                          "  source: {stage: io.frames, params: {path: data}}\n"
+                          "  median: {stage: filter.median, in: {depth: source.depth}}\n"
+                          "variants:\n"
+                          "  wide: {set: {median.size: 5}}\n"
+                          "  typo: {set: {median.siz: 5}}\n";
+  const auto all = run_cli("validate " + shell_quote(graph.string()));
+  EXPECT_EQ(all.exit_code, 3) << all.out;
+  EXPECT_NE(all.out.find("variants.yaml:8:"), std::string::npos) << all.out;
+  EXPECT_NE(all.out.find("variant typo"), std::string::npos) << all.out;
+  EXPECT_EQ(all.out.find("is valid"), std::string::npos) << all.out;
+
+  const auto one = run_cli("validate --variant wide " + shell_quote(graph.string()));
+  EXPECT_EQ(one.exit_code, 0) << one.out;
+  EXPECT_NE(one.out.find("variant wide"), std::string::npos) << one.out;
+}
+
+TEST(Cli, ValidateNamesTheVariantsOfTheShippedGraph) {
+  const auto result =
+      run_cli("validate " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("variants convex pca5 pca_box bsp valid too"), std::string::npos)
+      << result.out;
+}
+
 TEST(Cli, DotPrintsNodesAndTypedEdges) {
   const auto result =
       run_cli("dot " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
