@@ -81,6 +81,18 @@ class GraphValidator {
     }
   }
 
+  // "; did you mean 'metric'?" for a mistyped string choice ('metrc'), else nothing.
+  static std::string choice_suggestion(const ParamSpec& param, const ParamValue& value) {
+    const auto* text = std::get_if<std::string>(&value);
+    if (text == nullptr) return {};
+    std::vector<std::string> choices;
+    for (const ParamValue& choice : param.options.choices) {
+      if (const auto* name = std::get_if<std::string>(&choice)) choices.push_back(*name);
+    }
+    const std::string guess = did_you_mean(*text, choices);
+    return guess.empty() ? std::string() : "; did you mean '" + guess + "'?";
+  }
+
   void check_params(CheckedNode& node) {
     if (node.stage == nullptr) return;
     const NodeSpec& spec = *node.spec;
@@ -112,7 +124,7 @@ class GraphValidator {
       }
       const ParamValue& value = std::get<ParamValue>(parsed);
       if (const auto error = check_param_value(*param, value)) {
-        diagnostics_.error(setting.where, what + *error);
+        diagnostics_.error(setting.where, what + *error + choice_suggestion(*param, value));
         continue;
       }
       node.params.set(setting.name, value);

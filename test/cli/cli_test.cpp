@@ -148,6 +148,15 @@ TEST(Cli, ValidateChecksEveryVariant) {
   EXPECT_NE(one.out.find("variant wide"), std::string::npos) << one.out;
 }
 
+TEST(Cli, AMistypedChoiceGetsTheClosestChoice) {
+  const auto result = run_cli("validate --set normals.space=metrc " +
+                              shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  EXPECT_EQ(result.exit_code, 3) << result.out;
+  EXPECT_NE(result.out.find("is not one of image, metric; did you mean 'metric'?"),
+            std::string::npos)
+      << result.out;
+}
+
 TEST(Cli, ValidateNamesTheVariantsOfTheShippedGraph) {
   const auto result =
       run_cli("validate " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
