@@ -87,6 +87,16 @@ std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
   if (registry == nullptr) loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);
   const Registry& stages = registry != nullptr ? *registry : loaded->registry;
   loaded->graph = validate_graph(loaded->spec, stages, diagnostics);
+  // A plugin that did not load is an error when the graph needs one of its stages (validation
+  // reported that, with the failure as a note); otherwise it must not pass in silence either.
+  if (registry == nullptr && !diagnostics.has_errors()) {
+    for (const auto& failure : stages.failures()) {
+      diagnostics.warning({}, "plugin " + failure.file.string() + " did not load (" +
+                                  failure.reason +
+                                  "); no node of this graph needs it (`facet doctor` lists "
+                                  "every plugin)");
+    }
+  }
   diagnostics.print(std::cerr);  // warnings too
   if (diagnostics.has_errors()) {
     bool missing_stage = false;

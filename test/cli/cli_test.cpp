@@ -157,6 +157,21 @@ TEST(Cli, AMistypedChoiceGetsTheClosestChoice) {
       << result.out;
 }
 
+// A plugin that does not load is an error only for a graph that needs it; for the others it is
+// a warning that names the file, never silence.
+TEST(Cli, APluginThatFailsButIsNotNeededIsAWarning) {
+  TempDir dir("facet-cli-bad-plugin");
+  std::ofstream(dir.path() / "libfacet_bogus.so") << "not a shared library";
+  const auto result = run_cli("validate --plugin-path " + shell_quote(dir.path().string()) + " " +
+                              shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("warning: plugin " + (dir.path() / "libfacet_bogus.so").string() +
+                            " did not load"),
+            std::string::npos)
+      << result.out;
+  EXPECT_EQ(result.out.find("error:"), std::string::npos) << result.out;
+}
+
 TEST(Cli, ValidateNamesTheVariantsOfTheShippedGraph) {
   const auto result =
       run_cli("validate " + shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
