@@ -4,11 +4,12 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
+#include <utility>
 #include <vector>
 
 #include "bundled_frames.hpp"
+#include "facet/framework/statistics.hpp"
 #include "facet/pipeline.hpp"
 
 namespace {
@@ -35,12 +36,9 @@ void BM_PipelineTabletopFrame(benchmark::State& state) {
     outside_ms.push_back(call_ms - stages_ms);
     benchmark::DoNotOptimize(result);
   }
-  if (!outside_ms.empty()) {
-    auto middle = outside_ms.begin() + static_cast<std::ptrdiff_t>(outside_ms.size() / 2);
-    std::nth_element(outside_ms.begin(), middle, outside_ms.end());
-    state.counters["outside_stages_ms"] = *middle;
-  }
+  state.counters["outside_stages_ms"] = facet::median(std::move(outside_ms));
 }
+
 BENCHMARK(BM_PipelineTabletopFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
