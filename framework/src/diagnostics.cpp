@@ -90,7 +90,10 @@ std::string format_location(const SourceLocation& where) {
 }
 
 std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {
-  if (name.empty()) return {};
+  // A name longer than any identifier a person types is no typo: no suggestion, and no
+  // quadratic edit distance over a megabyte-long name.
+  constexpr std::size_t kMaxSuggestedLength = 128;
+  if (name.empty() || name.size() > kMaxSuggestedLength) return {};
   const std::string wanted = lowercase(name);
   // Allow roughly one typo per three characters: enough for slips, few absurd suggestions.
   const std::size_t limit = std::max<std::size_t>(1, wanted.size() / 3);
@@ -98,6 +101,12 @@ std::string did_you_mean(const std::string& name, const std::vector<std::string>
   std::size_t best_distance = limit + 1;
   for (const auto& candidate : candidates) {
     if (candidate == name) continue;
+    // The edit distance is at least the difference in length: most candidates are ruled out
+    // without computing it.
+    const std::size_t length_gap = candidate.size() > wanted.size()
+                                       ? candidate.size() - wanted.size()
+                                       : wanted.size() - candidate.size();
+    if (length_gap >= best_distance) continue;
     const std::size_t distance = edit_distance(wanted, lowercase(candidate));
     // Strictly better only, so that ties go to the first candidate and the answer is stable.
     if (distance < best_distance) {

@@ -206,6 +206,7 @@ GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& 
 
   YAML::Node root;
   try {
+    if (!detail::refuse_aliases(yaml, file, diagnostics)) return graph;
     root = YAML::Load(yaml);
   } catch (const YAML::Exception& error) {
     const SourceLocation where =

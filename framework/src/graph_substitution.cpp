@@ -33,6 +33,17 @@ std::optional<std::string> ParamSubstitution::expand(const std::string& text,
       diagnostics.error(where, "undefined graph parameter '${" + name + "}'" +
                                    suggestion_suffix(name, names, "defined are"));
       ok = false;
+    } else if (open == 0 && close + 1 < text.size() && text[close + 1] == '/' &&
+               it->second.find_first_not_of('/') == std::string::npos) {
+      // `--param output=` (or `=/`) would turn '${output}/labels' into '/labels': files written
+      // at the top of the filesystem, which nobody asks for this way.
+      diagnostics.error(where, "graph parameter '" + name + "' is " +
+                                   (it->second.empty() ? "empty" : "'" + it->second + "'") +
+                                   ", which makes '" + text +
+                                   "' a path at the filesystem root; "
+                                   "give it a folder (--param " +
+                                   name + "=DIR)");
+      ok = false;
     } else {
       out += it->second;
     }

@@ -1,7 +1,8 @@
 #include "graph_variants.hpp"
 
 #include <algorithm>
-#include <set>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "yaml_checks.hpp"
@@ -19,27 +20,68 @@ void check_node_reference(const RawGraph& graph, const std::string& node,
                                suggestion_suffix(node, graph.node_ids(), ""));
 }
 
-// Depth-first walk over `extends`; `path` holds the variants being visited, so meeting one of
-// them again is a cycle, reported once at the reference that closes it.
-void check_extends_cycles(const RawGraph& graph, const RawVariant& variant,
-                          std::vector<std::string>& path, std::set<std::string>& done,
-                          Diagnostics& diagnostics) {
-  if (done.count(variant.name) > 0) return;
-  path.push_back(variant.name);
-  for (const auto& base : variant.extends) {
-    const auto on_path = std::find(path.begin(), path.end(), base.text);
-    if (on_path != path.end()) {
-      std::vector<std::string> cycle(on_path, path.end());
-      cycle.push_back(base.text);
-      diagnostics.error(base.where, "variant extends cycle: " + join(cycle, " -> "));
-      continue;
-    }
-    if (const RawVariant* next = graph.find_variant(base.text)) {
-      check_extends_cycles(graph, *next, path, done, diagnostics);
+// Position of every variant by name; the first of two equal names wins, as in find_variant.
+std::unordered_map<std::string, std::size_t> variant_positions(const RawGraph& graph) {
+  std::unordered_map<std::string, std::size_t> positions;
+  for (std::size_t i = 0; i < graph.variants.size(); ++i)
+    positions.emplace(graph.variants[i].name, i);
+  return positions;
+}
+
+// "a -> b -> c -> a", with the middle of a long cycle left out.
+std::string cycle_text(const std::vector<std::string>& cycle) {
+  constexpr std::size_t kShown = 8;
+  if (cycle.size() <= kShown) return join(cycle, " -> ");
+  const std::vector<std::string> head(cycle.begin(), cycle.begin() + kShown / 2);
+  const std::vector<std::string> tail(cycle.end() - kShown / 2, cycle.end());
+  return join(head, " -> ") + " -> ... (" + std::to_string(cycle.size() - kShown) + " more) -> " +
+         join(tail, " -> ");
+}
+
+// Where a depth-first walk over `extends` is: the variant and the next of its bases to visit.
+// The walks below keep their own stack, so that a chain of 100 000 variants neither overflows
+// the call stack nor takes quadratic time.
+struct ExtendsFrame {
+  std::size_t variant;
+  std::size_t next_base = 0;
+};
+
+// Meeting a variant that is on the walk's path again is a cycle, reported once at the reference
+// that closes it.
+void check_extends_cycles(const RawGraph& graph, Diagnostics& diagnostics) {
+  enum class Visit { unseen, on_path, done };
+  const auto positions = variant_positions(graph);
+  std::vector<Visit> visit(graph.variants.size(), Visit::unseen);
+  std::vector<std::size_t> depth_of(graph.variants.size(), 0);
+  for (std::size_t root = 0; root < graph.variants.size(); ++root) {
+    if (visit[root] != Visit::unseen) continue;
+    std::vector<ExtendsFrame> path{{root}};
+    visit[root] = Visit::on_path;
+    while (!path.empty()) {
+      ExtendsFrame& top = path.back();
+      const RawVariant& variant = graph.variants[top.variant];
+      if (top.next_base == variant.extends.size()) {
+        visit[top.variant] = Visit::done;
+        path.pop_back();
+        continue;
+      }
+      const auto& base = variant.extends[top.next_base++];
+      const auto found = positions.find(base.text);
+      if (found == positions.end()) continue;  // reported by check_variants
+      const std::size_t next = found->second;
+      if (visit[next] == Visit::on_path) {
+        std::vector<std::string> cycle;
+        for (std::size_t i = depth_of[next]; i < path.size(); ++i)
+          cycle.push_back(graph.variants[path[i].variant].name);
+        cycle.push_back(base.text);
+        diagnostics.error(base.where, "variant extends cycle: " + cycle_text(cycle));
+      } else if (visit[next] == Visit::unseen) {
+        visit[next] = Visit::on_path;
+        depth_of[next] = path.size();
+        path.push_back({next});
+      }
     }
   }
-  path.pop_back();
-  done.insert(variant.name);
 }
 
 void apply_replace(RawNode& node, const RawReplace& replace, const std::string& variant) {
@@ -64,11 +106,7 @@ void apply_replace(RawNode& node, const RawReplace& replace, const std::string& 
   }
 }
 
-void apply_one(RawGraph& graph, const RawVariant& variant, std::set<std::string>& applied) {
-  if (!applied.insert(variant.name).second) return;
-  for (const auto& base : variant.extends) {
-    if (const RawVariant* next = graph.find_variant(base.text)) apply_one(graph, *next, applied);
-  }
+void apply_edits(RawGraph& graph, const RawVariant& variant) {
   for (const auto& replace : variant.replaces) {
     if (RawNode* node = graph.find_node(replace.node)) apply_replace(*node, replace, variant.name);
   }
@@ -80,10 +118,11 @@ void apply_one(RawGraph& graph, const RawVariant& variant, std::set<std::string>
 }  // namespace
 
 void check_variants(const RawGraph& graph, Diagnostics& diagnostics) {
+  const auto positions = variant_positions(graph);
   for (const auto& variant : graph.variants) {
     const std::string context = "variant '" + variant.name + "'";
     for (const auto& base : variant.extends) {
-      if (graph.find_variant(base.text) == nullptr) {
+      if (positions.count(base.text) == 0) {
         diagnostics.error(base.where, "unknown variant '" + base.text + "' in 'extends' of " +
                                           context +
                                           suggestion_suffix(base.text, graph.variant_names(), ""));
@@ -97,17 +136,31 @@ void check_variants(const RawGraph& graph, Diagnostics& diagnostics) {
       check_node_reference(graph, set.node, set.key_where, "'set' of " + context, diagnostics);
     }
   }
-  std::set<std::string> done;
-  for (const auto& variant : graph.variants) {
-    std::vector<std::string> path;
-    check_extends_cycles(graph, variant, path, done, diagnostics);
-  }
+  check_extends_cycles(graph, diagnostics);
 }
 
 void apply_variant(RawGraph& graph, const std::string& name) {
-  std::set<std::string> applied;
-  // Applying edits only the nodes, so the variant pointers stay valid throughout.
-  if (const RawVariant* variant = graph.find_variant(name)) apply_one(graph, *variant, applied);
+  const auto positions = variant_positions(graph);
+  const auto start = positions.find(name);
+  if (start == positions.end()) return;
+  // Bases first, in the order `extends` lists them, each variant once; then the variant itself.
+  // Applying edits only the nodes, so the variants stay as they are throughout.
+  std::vector<bool> applied(graph.variants.size(), false);
+  std::vector<ExtendsFrame> path{{start->second}};
+  applied[start->second] = true;
+  while (!path.empty()) {
+    ExtendsFrame& top = path.back();
+    const RawVariant& variant = graph.variants[top.variant];
+    if (top.next_base == variant.extends.size()) {
+      apply_edits(graph, variant);
+      path.pop_back();
+      continue;
+    }
+    const auto found = positions.find(variant.extends[top.next_base++].text);
+    if (found == positions.end() || applied[found->second]) continue;
+    applied[found->second] = true;
+    path.push_back({found->second});
+  }
 }
 
 void set_param(RawNode& node, ParamSetting setting) {

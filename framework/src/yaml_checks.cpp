@@ -1,6 +1,11 @@
 #include "yaml_checks.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+
 #include <map>
+#include <optional>
+#include <sstream>
+#include <unordered_set>
 
 namespace facet::detail {
 
@@ -23,6 +28,45 @@ std::string_view kind_name(const YAML::Node& node) {
       return "nothing";
   }
   return "nothing";
+}
+
+namespace {
+
+// Events of the YAML parser, remembering where the first alias is.
+class AliasFinder final : public YAML::EventHandler {
+ public:
+  std::optional<YAML::Mark> first_alias;
+
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t /*anchor*/) override {
+    if (!first_alias) first_alias = mark;
+  }
+  void OnDocumentStart(const YAML::Mark& /*mark*/) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& /*mark*/, YAML::anchor_t /*anchor*/) override {}
+  void OnScalar(const YAML::Mark& /*mark*/, const std::string& /*tag*/, YAML::anchor_t /*anchor*/,
+                const std::string& /*value*/) override {}
+  void OnSequenceStart(const YAML::Mark& /*mark*/, const std::string& /*tag*/,
+                       YAML::anchor_t /*anchor*/, YAML::EmitterStyle::value /*style*/) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& /*mark*/, const std::string& /*tag*/, YAML::anchor_t /*anchor*/,
+                  YAML::EmitterStyle::value /*style*/) override {}
+  void OnMapEnd() override {}
+};
+
+}  // namespace
+
+bool refuse_aliases(const std::string& yaml, const std::string& file, Diagnostics& diagnostics) {
+  std::istringstream stream(yaml);
+  YAML::Parser parser(stream);
+  AliasFinder finder;
+  while (!finder.first_alias && parser.HandleNextDocument(finder)) {
+  }
+  if (!finder.first_alias) return true;
+  const YAML::Mark& mark = *finder.first_alias;
+  diagnostics.error({file, mark.line + 1, mark.column + 1},
+                    "YAML aliases (*name) are not allowed in graph files: write the value out, "
+                    "or give it a graph parameter and use ${name}");
+  return false;
 }
 
 void report_duplicate_keys(const YAML::Node& root, const std::string& file,
@@ -52,6 +96,7 @@ std::vector<MapEntry> map_entries(const YAML::Node& map, const std::string& file
                                   Diagnostics& diagnostics) {
   std::vector<MapEntry> entries;
   if (!map.IsMap()) return entries;
+  std::unordered_set<std::string> seen;
   for (const auto& entry : map) {
     const SourceLocation where = location_of(entry.first, file);
     if (!entry.first.IsScalar()) {
@@ -59,11 +104,8 @@ std::vector<MapEntry> map_entries(const YAML::Node& map, const std::string& file
           where, std::string("a key must be a scalar, got ") + std::string(kind_name(entry.first)));
       continue;
     }
-    const std::string key = entry.first.Scalar();
-    bool repeated = false;
-    for (const auto& seen : entries)
-      repeated = repeated || seen.key == key;
-    if (!repeated) entries.push_back({key, where, entry.second});
+    const std::string& key = entry.first.Scalar();
+    if (seen.insert(key).second) entries.push_back({key, where, entry.second});
   }
   return entries;
 }

@@ -19,6 +19,11 @@ SourceLocation location_of(const YAML::Node& node, const std::string& file);
 // "a map", "a list", "a scalar", "nothing": for "expected a map, got a list".
 std::string_view kind_name(const YAML::Node& node);
 
+// Reports the first YAML alias (`*name`) in `yaml` and returns false when there is one. Graph
+// files have graph parameters for repeated values; an alias can refer to itself or expand
+// exponentially (`a: &a [*a]`, billion laughs), which no walk over the document survives.
+bool refuse_aliases(const std::string& yaml, const std::string& file, Diagnostics& diagnostics);
+
 // Reports every map key that occurs twice in the same map, at any depth of `root`.
 void report_duplicate_keys(const YAML::Node& root, const std::string& file,
                            Diagnostics& diagnostics);

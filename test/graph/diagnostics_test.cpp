@@ -47,6 +47,19 @@ TEST(GraphDidYouMean, StaysQuietForUnrelatedNames) {
   EXPECT_EQ(did_you_mean("x", {}), "");
 }
 
+// A 10 MB stage name took 1.8 GB in the edit distance; names longer than anything typed get no
+// suggestion, and candidates far longer or shorter are ruled out by their length alone.
+TEST(GraphDidYouMean, ANameLongerThanAnyIdentifierGetsNoSuggestion) {
+  const std::string huge(10'000'000, 'a');
+  EXPECT_EQ(did_you_mean(huge, {huge.substr(1), "normals.cross"}), "");
+  std::vector<std::string> many;
+  for (int i = 0; i < 100'000; ++i)
+    many.push_back("param_number_" + std::to_string(i));
+  many.push_back("output");
+  EXPECT_EQ(did_you_mean("ouptut", many), "output");
+  EXPECT_EQ(did_you_mean("param_numbr_99999", many), "param_number_99999");
+}
+
 TEST(GraphDidYouMean, BreaksTiesByCandidateOrder) {
   EXPECT_EQ(did_you_mean("sise", {"size", "site"}), "size");
   EXPECT_EQ(did_you_mean("sise", {"site", "size"}), "site");

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "graph_test_support.hpp"
 
@@ -209,6 +210,32 @@ TEST(GraphLoader, ReportsYamlSyntaxErrorsAtTheirMark) {
   EXPECT_TRUE(graph.nodes.empty());
 }
 
+// An alias that contains itself overflowed the stack of the duplicate-key walk, and nested
+// aliases (billion laughs) made it exponential: aliases are refused before the document is built.
+TEST(GraphLoader, RefusesYamlAliasesAtTheirMark) {
+  std::ostringstream laughs;
+  laughs << "facet: 1\na0: &a0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n";
+  for (int i = 1; i < 10; ++i) {
+    laughs << 'a' << i << ": &a" << i << " [*a" << i - 1;
+    for (int k = 1; k < 9; ++k)
+      laughs << ", *a" << i - 1;
+    laughs << "]\n";
+  }
+  const std::pair<std::string, std::string> cases[] = {
+      {"facet: 1\ndescription: &x [*x]\nnodes: {a: {stage: x}}\n", "g.yaml:2:"},
+      {laughs.str() + "nodes: {a: {stage: x}}\n", "g.yaml:3:"},
+      {"facet: 1\nparams: {p: &v 3}\nnodes: {a: {stage: x, params: {q: *v}}}\n", "g.yaml:3:"},
+  };
+  for (const auto& [yaml, where] : cases) {
+    Diagnostics diagnostics;
+    const GraphSpec graph = load(yaml, diagnostics);
+    const std::string error = single_error(diagnostics);
+    EXPECT_EQ(error.rfind(where, 0), 0U) << error;
+    EXPECT_NE(error.find("YAML aliases (*name) are not allowed"), std::string::npos) << error;
+    EXPECT_TRUE(graph.nodes.empty());
+  }
+}
+
 TEST(GraphLoader, MissingFileIsOneDiagnosticNamingIt) {
   Diagnostics diagnostics;
   load_graph_file("no/such/graph.yaml", {}, diagnostics);
@@ -309,6 +336,33 @@ TEST(GraphParams, UndefinedReferenceIsReportedAtTheScalar) {
        diagnostics);
   EXPECT_EQ(single_error(diagnostics),
             "g.yaml:4:29: undefined graph parameter '${inptu}'; did you mean 'input'?");
+}
+
+// `--param output=` made '${output}/labels' the folder '/labels': as root, facet wrote there.
+TEST(GraphParams, AnEmptyOrRootParamThatWouldPutAPathAtTheRootIsAnError) {
+  for (const std::string value : {"", "/", "//"}) {
+    LoadOptions options;
+    options.params["output"] = value;
+    Diagnostics diagnostics;
+    load(
+        "facet: 1\nparams: {output: out}\nnodes:\n  a: {stage: x, params: {dir: "
+        "\"${output}/labels\"}}\n",
+        diagnostics, options);
+    const std::string error = single_error(diagnostics);
+    EXPECT_NE(error.find("g.yaml:4:31: graph parameter 'output' is "), std::string::npos) << error;
+    EXPECT_NE(error.find("'${output}/labels' a path at the filesystem root"), std::string::npos)
+        << error;
+  }
+  // Empty elsewhere in a value, or not followed by a folder, stays allowed.
+  LoadOptions options;
+  options.params["output"] = "";
+  Diagnostics diagnostics;
+  const auto graph = load(
+      "facet: 1\nparams: {output: out}\nnodes:\n  a: {stage: x, params: {dir: \"a${output}/b\", "
+      "e: \"${output}\"}}\n",
+      diagnostics, options);
+  ASSERT_FALSE(diagnostics.has_errors()) << diagnostics.str();
+  EXPECT_EQ(find_param(graph.nodes[0], "dir")->text, "a/b");
 }
 
 TEST(GraphParams, UnterminatedReferenceIsReported) {
