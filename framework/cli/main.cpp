@@ -23,7 +23,9 @@ int main(int argc, char** argv) {
       "  1  runtime failure (a stage failed while the graph ran)\n"
       "  2  usage error (bad command line, unknown stage name)\n"
       "  3  invalid graph (every error is printed as file:line:col: error: ...)\n"
-      "  4  plugin failure (a needed plugin failed to load; see `facet doctor`)\n\n"
+      "  4  plugin failure (a needed plugin failed to load; see `facet doctor`)\n"
+      "  130, 143  `facet run` stopped by SIGINT (Ctrl-C) or SIGTERM: the frames begun were\n"
+      "     finished and written, the statistics too; a second signal ends it at once\n\n"
       "Plugins are searched in --plugin-path, $FACET_PLUGIN_PATH, the graph's plugins.paths,\n"
       "next to the executable (../lib/facet/plugins) and in the install prefix.\n"
       "Run `facet COMMAND --help` for the options of a command.");

@@ -17,6 +17,7 @@
 #include "facet/framework/trace_writer.hpp"
 #include "option_checks.hpp"
 #include "session.hpp"
+#include "signal_stop.hpp"
 
 namespace facet::cli {
 namespace {
@@ -91,6 +92,7 @@ int run(const RunArgs& args) {
   if (loaded->exit_code != kOk) return loaded->exit_code;
 
   RunStats stats;
+  const SignalStop signals;
   try {
     ProgressLine progress(!args.quiet && isatty(STDERR_FILENO) == 1);
     RunOptions options;
@@ -103,6 +105,7 @@ int run(const RunArgs& args) {
       progress.finish();
       std::cerr << message << '\n';
     };
+    options.stop = &signals.stop();
     options.stall_after = std::chrono::milliseconds(args.stall_ms);
     // Called from the watchdog's thread while the executor's threads keep running: it only
     // prints, and ends the process when asked to, since a hung stage call cannot be stopped.
@@ -126,10 +129,19 @@ int run(const RunArgs& args) {
                      stats.throughput_fps())
               << (stats.dropped > 0 ? fmt::format(", {} dropped", stats.dropped) : "") << '\n';
   }
+  if (stats.stopped) {
+    // Always said, even with --quiet: a script must learn that the input was not read to its end.
+    std::cerr << fmt::format(
+        "stopped by {}: {} frame(s) completed and written whole; the rest of the input was not "
+        "read\n",
+        signal_name(signals.signal()), stats.frames);
+  }
   if (args.profile) write_profile_table(std::cout, stats);
   if (!args.json_file.empty()) {
     std::ofstream out(args.json_file);
     write_run_json(out, stats, loaded->graph.name, loaded->spec.variant);
+    // A full disk shows only when the buffer is flushed: close before checking.
+    out.close();
     if (!out) {
       std::cerr << "error: cannot write " << args.json_file.string() << '\n';
       return kRuntimeFailure;
@@ -138,12 +150,14 @@ int run(const RunArgs& args) {
   if (!args.trace_file.empty()) {
     std::ofstream out(args.trace_file);
     write_chrome_trace(out, stats, loaded->graph.name);
+    // A full disk shows only when the buffer is flushed: close before checking.
+    out.close();
     if (!out) {
       std::cerr << "error: cannot write " << args.trace_file.string() << '\n';
       return kRuntimeFailure;
     }
   }
-  return kOk;
+  return stats.stopped ? 128 + signals.signal() : kOk;
 }
 
 }  // namespace

@@ -173,7 +173,8 @@ PipelinedExecutor::Impl::Impl(const ValidatedGraph& graph, PipelinedExecutorOpti
 
 bool PipelinedExecutor::Impl::can_start_frame() const {
   return !failed_ && next_frame_ < end_frame_ &&
-         (options_->max_frames < 0 || next_frame_ < options_->max_frames);
+         (options_->max_frames < 0 || next_frame_ < options_->max_frames) &&
+         !options_->stop_requested();
 }
 
 void PipelinedExecutor::Impl::start_frame(std::size_t index, bool admitted) {
@@ -580,6 +581,8 @@ RunStats PipelinedExecutor::Impl::run(const RunOptions& options) {
 
   close_all(close_error);
   stats_.wall_ms = detail::ms_between(run_start_, Clock::now());
+  stats_.stopped = options.stop_requested() && end_frame_ == kNoEnd &&
+                   (options.max_frames < 0 || next_frame_ < options.max_frames);
   options_ = nullptr;
   if (error_) std::rethrow_exception(error_);
   if (!close_error.empty()) throw RunError(close_error);

@@ -52,6 +52,10 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
     return std::span<const Packet>(nodes_[i]->ctx->outputs());
   };
   for (std::int64_t frame = 0; options.max_frames < 0 || frame < options.max_frames; ++frame) {
+    if (options.stop_requested()) {
+      stats.stopped = true;
+      break;
+    }
     const auto frame_start = detail::Clock::now();
     bool stream_ended = false;
     std::string stem;

@@ -1,8 +1,16 @@
 // `facet run` end to end: the main job on the bundled frames, statistics, overrides, failures.
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
+#include <thread>
 
 #include "cli_runner.hpp"
 
@@ -97,6 +105,78 @@ TEST(Run, MissingInputFolderIsARuntimeFailureNamingIt) {
   EXPECT_EQ(result.exit_code, 1) << result.out;
   EXPECT_NE(result.out.find("no-such-dataset"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("source"), std::string::npos) << result.out;
+}
+
+// A full disk: the stats and the trace went unwritten with exit 0, as the check came before the
+// buffer was flushed.
+TEST(Run, WriteErrorsOfTheJsonAndTheTraceAreFailures) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  TempDir out("facet-run-full");
+  for (const char* option : {"--json", "--trace"}) {
+    const auto result =
+        run_cli("run " + shell_quote(kTabletop.string()) + " -q --frames 1 --param output=" +
+                shell_quote(out.path().string()) + " " + option + " /dev/full");
+    EXPECT_EQ(result.exit_code, 1) << option << "\n" << result.out;
+    EXPECT_NE(result.out.find("cannot write /dev/full"), std::string::npos) << result.out;
+  }
+}
+
+// `--param output=` would have written to /labels, /objects and /overlay.
+TEST(Run, AnEmptyOutputParamIsAnInvalidGraph) {
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " -q --param output=");
+  EXPECT_EQ(result.exit_code, 3) << result.out;
+  EXPECT_NE(result.out.find("graph parameter 'output' is empty"), std::string::npos) << result.out;
+}
+
+// Ctrl-C or SIGTERM ended the process at once: no --json, a truncated label PNG, frames with only
+// some of their files. Now the frames begun are finished, the rest is not started, the
+// statistics are written and the exit code says which signal it was.
+TEST(Run, ASignalFinishesTheFramesBegunAndWritesTheStatistics) {
+  for (const int signal : {SIGTERM, SIGINT}) {
+    TempDir out("facet-run-signal");
+    const auto json = out.path() / "stats.json";
+    const auto log = out.path() / "log.txt";
+    const std::string output = "output=" + out.path().string();
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      ::dup2(fd, STDOUT_FILENO);
+      ::dup2(fd, STDERR_FILENO);
+      ::signal(SIGINT, SIG_DFL);  // as from a terminal, whatever this test was started with
+      ::execl(FACET_CLI, FACET_CLI, "run", kTabletop.c_str(), "--param", output.c_str(), "--set",
+              "source.loop=true", "--json", json.c_str(), static_cast<char*>(nullptr));
+      std::_Exit(127);
+    }
+    // Looping over the bundled frames, the run never ends by itself: stop it once it has
+    // written a few frames.
+    for (int wait = 0; wait < 1200 && count_pngs(out.path() / "labels") < 3; ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    ASSERT_EQ(::kill(child, signal), 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    const std::string printed = read_file(log);
+    ASSERT_TRUE(WIFEXITED(status)) << printed;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << printed;
+    EXPECT_NE(printed.find(signal == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM"),
+              std::string::npos)
+        << printed;
+
+    // Every label PNG is whole, nothing is left half-written, and every frame has all its files.
+    for (const char* folder : {"labels", "objects", "overlay"}) {
+      for (const auto& entry : std::filesystem::directory_iterator(out.path() / folder)) {
+        EXPECT_EQ(entry.path().filename().string().rfind('.', 0), std::string::npos)
+            << entry.path();
+      }
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(out.path() / "labels")) {
+      EXPECT_FALSE(cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED).empty()) << entry.path();
+      const auto stem = entry.path().stem().string();
+      EXPECT_TRUE(std::filesystem::exists(out.path() / "objects" / (stem + ".json"))) << stem;
+      EXPECT_TRUE(std::filesystem::exists(out.path() / "overlay" / (stem + ".png"))) << stem;
+    }
+    EXPECT_NE(read_file(json).find("\"frames\": "), std::string::npos) << printed;
+  }
 }
 
 TEST(Run, UnknownGraphParamIsAnInvalidGraph) {

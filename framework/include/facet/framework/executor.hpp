@@ -6,6 +6,7 @@
 // - PipelinedExecutor (pipelined_executor.hpp): several frames in flight on a fixed pool of
 //   threads, each stage run as its declared Concurrency allows; it writes the same outputs.
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -51,6 +52,7 @@ struct RunStats {
   std::vector<double> frame_ms;
   double wall_ms = 0.0;           // the whole run, from opening the first stage to closing the last
   std::int64_t dropped = 0;       // frames a `latest` source replaced before they were processed
+  bool stopped = false;           // RunOptions::stop ended the run before the stream ended
   std::vector<CallRecord> calls;  // only with RunOptions::record_calls, in no particular order
 
   // Frames per second over the whole run (throughput), 0 before any frame.
@@ -97,6 +99,13 @@ struct RunOptions {
   std::function<void(const StallReport&)> on_stall;
   // Every source of a graph shares its frames, so they share one policy.
   SourcePolicy source_policy = SourcePolicy::block;
+  // Set to true from anywhere (a signal handler among them) to end the run early: no frame starts
+  // once it is seen, the frames already begun run to their end (every sink gets them whole), and
+  // the stages are closed as at the end of a stream (a recording is finished properly). May be
+  // null; must outlive run().
+  const std::atomic<bool>* stop = nullptr;
+
+  bool stop_requested() const { return stop != nullptr && stop->load(std::memory_order_relaxed); }
 };
 
 class SequentialExecutor {
