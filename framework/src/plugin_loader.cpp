@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "elf_check.hpp"
 #include "facet/plugin.hpp"
 #include "plugin_files.hpp"
 #include "plugin_header_check.hpp"
@@ -37,6 +38,10 @@ struct Opened {
 
 Opened open_library(const fs::path& file) {
   Opened result;
+  if (const auto refused = detail::check_elf_file(file)) {
+    result.error = "cannot load: " + file.string() + ": " + *refused;
+    return result;
+  }
   auto library = std::make_shared<Library>();
   boost::dll::fs::error_code ec;
   library->load(boost::dll::fs::path(file.native()), kLoadMode, ec);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -182,6 +183,27 @@ TEST(LoadPlugin, FileThatIsNotALibraryNamesTheFile) {
   const auto reason = failure_reason(file);
   EXPECT_THAT(reason, HasSubstr("cannot load"));
   EXPECT_THAT(reason, HasSubstr("libfacet_text.so"));
+}
+
+// A plugin file cut short (an interrupted copy) made the dynamic loader die of SIGBUS, taking
+// every command with it: the ELF headers are checked against the file's size first.
+TEST(LoadPlugin, ATruncatedLibraryIsRefusedBeforeTheLoaderMapsIt) {
+  const auto good = test::test_plugin_file("good");
+  std::ifstream in(good, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  ASSERT_GT(bytes.size(), 16'384U);
+  test::TempDir tmp;
+  for (const std::size_t size :
+       {std::size_t{4096}, bytes.size() / 4, bytes.size() / 2, bytes.size() - 1}) {
+    const auto file = tmp.path() / ("libfacet_cut" + std::to_string(size) + ".so");
+    std::ofstream(file, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(size));
+    const auto reason = failure_reason(file);
+    EXPECT_THAT(reason, HasSubstr(file.filename().string()));
+    EXPECT_THAT(reason, HasSubstr("truncated or corrupt")) << size;
+  }
+  const auto tiny = tmp.path() / "libfacet_tiny.so";
+  std::ofstream(tiny, std::ios::binary).write(bytes.data(), 40);
+  EXPECT_THAT(failure_reason(tiny), HasSubstr("shorter than an ELF header"));
 }
 
 }  // namespace
