@@ -200,16 +200,7 @@ void CloudSink::process(ProcessContext& ctx) {
       (points.frame.stem.empty() ? std::to_string(points.frame.index) : points.frame.stem) +
       ": metres, camera frame (x right, y down, z forward)";
   const PlyCloud cloud = make_ply(points.points, ids, format_, labelled_only_, comment);
-  errno = 0;
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    throw StageError("cannot open '" + file.string() + "' for writing" +
-                     (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()));
-  }
-  out.write(cloud.header.data(), static_cast<std::streamsize>(cloud.header.size()));
-  out.write(cloud.body.data(), static_cast<std::streamsize>(cloud.body.size()));
-  out.close();
-  if (!out) throw StageError("cannot write '" + file.string() + "'");
+  write_file_atomically(file, {cloud.header, cloud.body});
   ctx.metric("points", static_cast<double>(cloud.vertices));
 }
 

@@ -2,9 +2,12 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "facet/error.hpp"
@@ -35,6 +38,29 @@ T required_number(const std::filesystem::path& file, const YAML::Node& root, con
   }
 }
 
+// A value of a key outside its plausible range: refused, since a focal length of 1e300 or a
+// NaN principal point runs without error and silently gives no objects.
+void check_range(const std::filesystem::path& file, const YAML::Node& root, const char* key,
+                 double value, double min, double max, const char* meaning) {
+  if (std::isfinite(value) && value >= min && value <= max) return;
+  std::ostringstream text;
+  text << location(file, root[key].Mark()) << ": key '" << key << "' is " << value << ", "
+       << meaning << " lies in [" << min << ", " << max << "]";
+  throw StageError(text.str());
+}
+
+// yaml-cpp keeps one of two equal keys without a word; a file that says fx twice is refused.
+void check_unique_keys(const std::filesystem::path& file, const YAML::Node& root) {
+  std::set<std::string> seen;
+  for (const auto& entry : root) {
+    if (!entry.first.IsScalar()) continue;
+    if (!seen.insert(entry.first.Scalar()).second) {
+      throw StageError(location(file, entry.first.Mark()) + ": key '" + entry.first.Scalar() +
+                       "' appears twice");
+    }
+  }
+}
+
 }  // namespace
 
 CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
@@ -52,6 +78,7 @@ CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
   }
   if (!root.IsMap())
     throw StageError(file.string() + ": expected a map of fx, fy, cx, cy, width, height");
+  check_unique_keys(file, root);
 
   CameraIntrinsics camera;
   camera.fx = required_number<double>(file, root, "fx", "a focal length in pixels");
@@ -60,9 +87,17 @@ CameraIntrinsics read_intrinsics(const std::filesystem::path& file) {
   camera.cy = required_number<double>(file, root, "cy", "a principal point y in pixels");
   camera.width = required_number<int>(file, root, "width", "an image width in pixels");
   camera.height = required_number<int>(file, root, "height", "an image height in pixels");
-  if (!camera.valid()) {
-    throw StageError(file.string() + ": fx, fy, width and height must all be positive");
+  check_range(file, root, "width", camera.width, 1, kMaxIntrinsicsSizePx, "an image width");
+  check_range(file, root, "height", camera.height, 1, kMaxIntrinsicsSizePx, "an image height");
+  for (const char* key : {"fx", "fy"}) {
+    check_range(file, root, key, key[1] == 'x' ? camera.fx : camera.fy, kMinFocalLengthPx,
+                kMaxFocalLengthPx, "a focal length in pixels");
   }
+  // The principal point may lie off the image (a crop), but not by more than the image's size.
+  check_range(file, root, "cx", camera.cx, -camera.width, 2.0 * camera.width,
+              "a principal point x (within the image widened by its width on each side)");
+  check_range(file, root, "cy", camera.cy, -camera.height, 2.0 * camera.height,
+              "a principal point y (within the image widened by its height on each side)");
   return camera;
 }
 

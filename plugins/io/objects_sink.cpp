@@ -195,11 +195,7 @@ void ObjectsSink::process(ProcessContext& ctx) {
   const auto& list = ctx.input<ObjectList>("objects");
   const std::filesystem::path file = json_file(dir_, list.frame);
   const std::string text = objects_to_json(list);
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) throw StageError("cannot open '" + file.string() + "' for writing");
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throw StageError("cannot write '" + file.string() + "'");
+  write_file_atomically(file, {text});
 }
 
 }  // namespace facet::io

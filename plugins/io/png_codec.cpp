@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -328,12 +329,23 @@ bool has_signature(std::span<const std::uint8_t> bytes) {
          std::equal(kSignature.begin(), kSignature.end(), bytes.begin());
 }
 
-std::optional<cv::Mat> decode(std::span<const std::uint8_t> bytes) {
-  if (!has_signature(bytes)) throw FormatError("not a PNG file (no PNG signature)");
+namespace {
+
+// What a walk over all chunks finds: the header, the image data and whether every critical
+// chunk is one this codec knows.
+struct Chunks {
   Header header;
+  std::vector<std::uint8_t> compressed;
+  bool only_known_critical = true;
+};
+
+// Checks the signature, every chunk's length and CRC and the chunk order (IHDR first, IEND
+// last); throws FormatError where they are wrong.
+Chunks read_chunks(std::span<const std::uint8_t> bytes) {
+  if (!has_signature(bytes)) throw FormatError("not a PNG file (no PNG signature)");
+  Chunks chunks;
   bool have_header = false;
   bool ended = false;
-  std::vector<std::uint8_t> compressed;
   std::size_t at = kSignature.size();
   while (!ended) {
     if (bytes.size() - at < 12) throw FormatError("file is truncated (a chunk is cut off)");
@@ -353,40 +365,147 @@ std::optional<cv::Mat> decode(std::span<const std::uint8_t> bytes) {
     if (!have_header) {
       if (type_name != "IHDR")
         throw FormatError("first chunk is " + std::string(type_name) + ", not IHDR");
-      header = parse_header(data, length);
-      if (!handled(header)) return std::nullopt;
+      chunks.header = parse_header(data, length);
       have_header = true;
     } else if (type_name == "IDAT") {
-      compressed.insert(compressed.end(), data, data + length);
+      chunks.compressed.insert(chunks.compressed.end(), data, data + length);
     } else if (type_name == "IEND") {
       ended = true;
     } else if ((type[0] & 0x20) == 0 && type_name != "PLTE") {
-      return std::nullopt;  // a critical chunk this codec does not know
+      chunks.only_known_critical = false;  // a critical chunk this codec does not know
     }
   }
-  if (compressed.empty()) throw FormatError("no image data (IDAT chunk)");
+  if (chunks.compressed.empty()) throw FormatError("no image data (IDAT chunk)");
+  return chunks;
+}
 
-  const std::uint64_t pixel_bytes = (header.colour_type == kRgb ? 3u : 1u) * header.bit_depth / 8u;
-  const std::uint64_t row_bytes = pixel_bytes * header.width;
-  const std::uint64_t total = (row_bytes + 1) * header.height;
-  if (total > kMaxImageBytes) return std::nullopt;
+// Samples per pixel of a colour type, for the bit depths the specification allows it
+// (section 11.2.2); FormatError for any other combination.
+std::uint64_t bits_per_pixel(const Header& header) {
+  const auto depth_in = [&](std::initializer_list<int> depths) {
+    for (const int depth : depths) {
+      if (header.bit_depth == depth) return true;
+    }
+    return false;
+  };
+  std::uint64_t samples = 0;
+  bool allowed = false;
+  switch (header.colour_type) {
+    case 0:  // grey
+      samples = 1;
+      allowed = depth_in({1, 2, 4, 8, 16});
+      break;
+    case 2:  // RGB
+      samples = 3;
+      allowed = depth_in({8, 16});
+      break;
+    case 3:  // palette
+      samples = 1;
+      allowed = depth_in({1, 2, 4, 8});
+      break;
+    case 4:  // grey and alpha
+      samples = 2;
+      allowed = depth_in({8, 16});
+      break;
+    case 6:  // RGBA
+      samples = 4;
+      allowed = depth_in({8, 16});
+      break;
+    default:
+      break;
+  }
+  if (!allowed) {
+    throw FormatError("colour type " + std::to_string(header.colour_type) + " at bit depth " +
+                      std::to_string(header.bit_depth) + " is not a PNG format");
+  }
+  return samples * header.bit_depth;
+}
 
-  std::vector<std::uint8_t> rows(static_cast<std::size_t>(total));
+// The bytes the image data inflates to: filtered rows of each Adam7 pass when interlaced
+// (specification section 8.2), of the whole image otherwise, a filter byte per row.
+std::uint64_t raw_data_bytes(const Header& header) {
+  const std::uint64_t bits = bits_per_pixel(header);
+  const auto rows_bytes = [&](std::uint64_t width, std::uint64_t height) -> std::uint64_t {
+    if (width == 0 || height == 0) return 0;
+    return ((width * bits + 7) / 8 + 1) * height;
+  };
+  if (header.interlace == 0) return rows_bytes(header.width, header.height);
+  if (header.interlace != 1) throw FormatError("unknown interlace method");
+  struct Pass {
+    std::uint64_t x0, y0, dx, dy;
+  };
+  constexpr Pass kAdam7[] = {{0, 0, 8, 8}, {4, 0, 8, 8}, {0, 4, 4, 8}, {2, 0, 4, 4},
+                             {0, 2, 2, 4}, {1, 0, 2, 2}, {0, 1, 1, 2}};
+  std::uint64_t total = 0;
+  for (const Pass& pass : kAdam7) {
+    const auto count = [](std::uint64_t size, std::uint64_t start, std::uint64_t step) {
+      return size > start ? (size - start + step - 1) / step : 0;
+    };
+    total +=
+        rows_bytes(count(header.width, pass.x0, pass.dx), count(header.height, pass.y0, pass.dy));
+  }
+  return total;
+}
+
+// Inflates the image data into exactly `size` bytes, its Adler-32 checked; FormatError when the
+// stream is corrupt or inflates to more or fewer bytes than the header declares.
+std::vector<std::uint8_t> inflate_exactly(const Chunks& chunks, std::uint64_t size) {
+  const Header& header = chunks.header;
+  const std::string declared =
+      std::to_string(header.width) + "x" + std::to_string(header.height) + " pixels";
+  if (size > kMaxImageBytes) {
+    throw FormatError("its header declares " + declared + ", larger than facet reads (" +
+                      std::to_string(kMaxImageBytes >> 20) + " MiB of image data)");
+  }
+  std::vector<std::uint8_t> rows(static_cast<std::size_t>(size));
   const std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> decompressor(
       libdeflate_alloc_decompressor());
   if (!decompressor) throw std::bad_alloc();
   std::size_t produced = 0;
   const libdeflate_result result =
-      libdeflate_zlib_decompress(decompressor.get(), compressed.data(), compressed.size(),
-                                 rows.data(), rows.size(), &produced);
+      libdeflate_zlib_decompress(decompressor.get(), chunks.compressed.data(),
+                                 chunks.compressed.size(), rows.data(), rows.size(), &produced);
   if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
-    return std::nullopt;  // more data than the header says: libpng tolerates it, let it decide
+    throw FormatError("image data is longer than the header's " + declared + " (corrupt file)");
   }
   if (result != LIBDEFLATE_SUCCESS) throw FormatError("image data is corrupt (bad deflate stream)");
   if (produced != rows.size()) {
-    throw FormatError("image data is shorter than the header's " + std::to_string(header.width) +
-                      "x" + std::to_string(header.height) + " pixels (truncated file?)");
+    throw FormatError("image data is shorter than the header's " + declared + " (truncated file?)");
   }
+  return rows;
+}
+
+}  // namespace
+
+Info read_info(std::span<const std::uint8_t> bytes) {
+  if (!has_signature(bytes)) throw FormatError("not a PNG file (no PNG signature)");
+  const std::size_t at = kSignature.size();
+  if (bytes.size() < at + 8 + 13 + 4) throw FormatError("file is truncated (no IHDR chunk)");
+  const std::uint8_t* type = bytes.data() + at + 4;
+  if (std::string_view(reinterpret_cast<const char*>(type), 4) != "IHDR") {
+    throw FormatError("first chunk is not IHDR");
+  }
+  const std::uint32_t length = read_u32(bytes.data() + at);
+  if (length == 13 && libdeflate_crc32(0, type, 17) != read_u32(type + 17)) {
+    throw FormatError("chunk IHDR fails its CRC check (corrupt file)");
+  }
+  const Header header = parse_header(type + 4, length);
+  return {header.width, header.height, header.bit_depth, header.colour_type, header.interlace != 0};
+}
+
+void check_integrity(std::span<const std::uint8_t> bytes) {
+  const Chunks chunks = read_chunks(bytes);
+  (void)inflate_exactly(chunks, raw_data_bytes(chunks.header));
+}
+
+std::optional<cv::Mat> decode(std::span<const std::uint8_t> bytes) {
+  const Chunks chunks = read_chunks(bytes);
+  const Header& header = chunks.header;
+  if (!handled(header) || !chunks.only_known_critical) return std::nullopt;
+
+  const std::uint64_t pixel_bytes = (header.colour_type == kRgb ? 3u : 1u) * header.bit_depth / 8u;
+  const std::uint64_t row_bytes = pixel_bytes * header.width;
+  std::vector<std::uint8_t> rows = inflate_exactly(chunks, (row_bytes + 1) * header.height);
 
   const std::size_t stride = static_cast<std::size_t>(row_bytes) + 1;
   for (std::uint32_t y = 0; y < header.height; ++y) {

@@ -51,9 +51,30 @@ std::vector<std::uint8_t> encode(const cv::Mat& image, const EncodeOptions& opti
 // Whether `bytes` start with the PNG signature.
 bool has_signature(std::span<const std::uint8_t> bytes);
 
+// What a PNG's header declares, read without decoding anything (to refuse an image of the wrong
+// size before its pixels are allocated).
+struct Info {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint8_t bit_depth = 0;
+  std::uint8_t colour_type = 0;
+  bool interlaced = false;
+};
+
+// Throws FormatError for bytes that do not start with the signature and a well-formed IHDR.
+Info read_info(std::span<const std::uint8_t> bytes);
+
 // Decodes a non-interlaced 8- or 16-bit grey or 8-bit RGB PNG into CV_8UC1, CV_16UC1 or CV_8UC3
 // (BGR). Returns std::nullopt for any other well-formed PNG. Throws FormatError for bytes that
-// are not a well-formed PNG.
+// are not a well-formed PNG: a bad signature, chunk length or CRC, image data that is corrupt
+// (Adler-32 included) or inflates to more or fewer bytes than the header declares, or image data
+// above 1 GiB.
 std::optional<cv::Mat> decode(std::span<const std::uint8_t> bytes);
+
+// For the PNGs decode() leaves to a general decoder (palette, alpha, 1-4 bit, interlaced): the
+// same checks of every chunk and of the image data, which is inflated to the size the header
+// declares and then dropped. libpng, seeing a bad data check, only warns and decodes garbage.
+// Throws FormatError.
+void check_integrity(std::span<const std::uint8_t> bytes);
 
 }  // namespace facet::io::png

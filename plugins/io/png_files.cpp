@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "io/output_folder.hpp"
 #include "io/png_codec.hpp"
 
 namespace facet::io {
@@ -43,14 +45,33 @@ std::vector<std::uint8_t> read_bytes(const std::filesystem::path& file) {
   return bytes;
 }
 
+void check_size(const std::filesystem::path& file, int width, int height,
+                const CameraIntrinsics& camera) {
+  if (width != camera.width || height != camera.height) {
+    throw StageError(quoted(file) + " is " + size_text(width, height) + " but the intrinsics say " +
+                     size_text(camera.width, camera.height));
+  }
+}
+
 // The dataset's own PNGs (grey 8/16-bit, RGB) go through the fast codec; anything else it does
 // not handle (palette, alpha, interlaced PNGs, other formats) through OpenCV. IMREAD_UNCHANGED
 // keeps 16 bits; the default flags would squash the image to 8-bit colour.
-cv::Mat read_unchanged(const std::filesystem::path& file) {
+// A PNG's size is checked against the camera's before a pixel is allocated (a 69-byte file may
+// declare 23170x23170 pixels), and a PNG left to OpenCV is checked for integrity first: libpng
+// only warns about corrupt image data and decodes garbage.
+cv::Mat read_unchanged(const std::filesystem::path& file, const CameraIntrinsics& camera) {
   const std::vector<std::uint8_t> bytes = read_bytes(file);
   if (png::has_signature(bytes)) {
     try {
+      const png::Info info = png::read_info(bytes);
+      if (info.width > static_cast<std::uint32_t>(std::numeric_limits<int>::max()) ||
+          info.height > static_cast<std::uint32_t>(std::numeric_limits<int>::max())) {
+        throw png::FormatError("its header declares " + std::to_string(info.width) + "x" +
+                               std::to_string(info.height) + " pixels");
+      }
+      check_size(file, static_cast<int>(info.width), static_cast<int>(info.height), camera);
       if (std::optional<cv::Mat> image = png::decode(bytes)) return *std::move(image);
+      png::check_integrity(bytes);
     } catch (const png::FormatError& e) {
       throw StageError("cannot read " + quoted(file) + ": " + e.what());
     }
@@ -66,21 +87,14 @@ cv::Mat read_unchanged(const std::filesystem::path& file) {
                      ": not a readable image (truncated, corrupt "
                      "or not a PNG)");
   }
+  check_size(file, image.cols, image.rows, camera);
   return image;
-}
-
-void check_size(const std::filesystem::path& file, const cv::Mat& image,
-                const CameraIntrinsics& camera) {
-  if (image.cols != camera.width || image.rows != camera.height) {
-    throw StageError(quoted(file) + " is " + size_text(image.cols, image.rows) +
-                     " but the intrinsics say " + size_text(camera.width, camera.height));
-  }
 }
 
 }  // namespace
 
 cv::Mat read_depth_png(const std::filesystem::path& file, const CameraIntrinsics& camera) {
-  cv::Mat image = read_unchanged(file);
+  cv::Mat image = read_unchanged(file, camera);
   if (image.channels() != 1) {
     throw StageError(quoted(file) + " has " + std::to_string(image.channels()) +
                      " channels; depth must be a single-channel 16-bit PNG in millimetres");
@@ -91,16 +105,14 @@ cv::Mat read_depth_png(const std::filesystem::path& file, const CameraIntrinsics
                      "; depth must be a 16-bit PNG in millimetres (an 8-bit image cannot hold "
                      "depth; was it saved as a preview?)");
   }
-  check_size(file, image, camera);
   return image;
 }
 
 cv::Mat read_label_png(const std::filesystem::path& file, const CameraIntrinsics& camera) {
-  const cv::Mat image = read_unchanged(file);
+  const cv::Mat image = read_unchanged(file, camera);
   if (image.channels() != 1 || (image.depth() != CV_16U && image.depth() != CV_8U)) {
     throw StageError(quoted(file) + ": labels must be a single-channel 8- or 16-bit PNG");
   }
-  check_size(file, image, camera);
   cv::Mat labels;
   image.convertTo(labels, CV_32S);
   return labels;
@@ -110,11 +122,8 @@ void write_png(const std::filesystem::path& file, const cv::Mat& image,
                const png::EncodeOptions& options) {
   CV_Assert(image.type() == CV_16UC1 || image.type() == CV_8UC1 || image.type() == CV_8UC3);
   const std::vector<std::uint8_t> bytes = png::encode(image, options);
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw StageError("cannot write " + quoted(file) + ": " + std::strerror(errno));
+  write_file_atomically(
+      file, {std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())});
 }
 
 }  // namespace facet::io

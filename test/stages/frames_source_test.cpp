@@ -257,6 +257,33 @@ TEST_F(TinyDataset, NonNumericIntrinsicsValueNamesLineAndKey) {
   expect_stage_error([&] { runner.run(); }, {"intrinsics.yaml:3:", "'fy'", "five hundred"});
 }
 
+// Values that parse but cannot be a camera ran without error and gave no objects; each is
+// refused naming its line and key.
+TEST_F(TinyDataset, ImplausibleIntrinsicsValuesAreRefusedNamingLineAndKey) {
+  const std::string rest = "\ncx: 4\ncy: 3\nwidth: 8\nheight: 6\n";
+  for (const std::string fx : {".inf", "1e300", "1e-300", ".nan", "-500", "0"}) {
+    write_text(file("intrinsics.yaml"), "# camera\nfx: " + fx + "\nfy: 500" + rest);
+    Runner runner({{"path", path()}});
+    expect_stage_error([&] { runner.run(); }, {"intrinsics.yaml:2:", "'fx'", "focal length"});
+  }
+  for (const std::string cx : {".nan", ".inf", "-1e9"}) {
+    write_text(file("intrinsics.yaml"),
+               "fx: 500\nfy: 500\ncx: " + cx + "\ncy: 3\nwidth: 8\nheight: 6\n");
+    Runner runner({{"path", path()}});
+    expect_stage_error([&] { runner.run(); }, {"intrinsics.yaml:3:", "'cx'", "principal point"});
+  }
+  write_text(file("intrinsics.yaml"), "fx: 500\nfy: 500\ncx: 4\ncy: 3\nwidth: 8\nheight: 0\n");
+  Runner no_height({{"path", path()}});
+  expect_stage_error([&] { no_height.run(); }, {"intrinsics.yaml:6:", "'height'"});
+}
+
+TEST_F(TinyDataset, AKeySaidTwiceInTheIntrinsicsIsRefused) {
+  write_text(file("intrinsics.yaml"),
+             "fx: 500\nfy: 500\ncx: 4\ncy: 3\nwidth: 8\nheight: 6\nfx: 50\n");
+  Runner runner({{"path", path()}});
+  expect_stage_error([&] { runner.run(); }, {"intrinsics.yaml:7:", "'fx' appears twice"});
+}
+
 TEST_F(TinyDataset, MissingIntrinsicsFileIsAnOpenError) {
   std::filesystem::remove(file("intrinsics.yaml"));
   Runner runner({{"path", path()}});

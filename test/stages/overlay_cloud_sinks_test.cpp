@@ -540,7 +540,7 @@ TEST(OverlayAndCloudSinks, AFileThatCannotBeWrittenIsAnErrorNamingIt) {
   CloudRunner cloud({{"dir", dir.path().string()}});
   cloud.set_input("points", Packet::make(cloud_scene("x").points));
   expect_stage_error([&] { cloud.run(); },
-                     {"cannot open", (dir / "x.ply").string(), "Is a directory"});
+                     {"cannot write", (dir / "x.ply").string(), "Is a directory"});
 }
 
 // ---------------------------------------------------------------------------------------------

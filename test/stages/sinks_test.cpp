@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "facet/testing/stage_runner.hpp"
@@ -27,6 +29,11 @@ facet::FrameHeader header(const std::string& stem, std::int64_t index = 0) {
   h.frame.stem = stem;
   h.frame.index = index;
   return h;
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 cv::Mat read_unchanged(const std::filesystem::path& file) {
@@ -109,6 +116,39 @@ TEST(LabelsSink, RejectsIdsA16BitPngCannotHold) {
   labels.at<std::int32_t>(0, 1) = -2;
   sink.set_input("labels", Packet::make(LabelImage{header("neg"), labels, 1}));
   expect_stage_error([&] { sink.run(); }, {"neg.png", "negative"});
+}
+
+// A symlink in the output folder made a sink overwrite the link's target. Results are written
+// to a temporary file and renamed: the link is replaced, its target kept, nothing left over.
+TEST(LabelsSink, WritesNeverFollowASymlinkAndLeaveNoPartialFiles) {
+  TempDir dir;
+  write_text(dir / "precious.txt", "keep me");
+  std::filesystem::create_directories(dir / "labels");
+  std::filesystem::create_symlink(dir / "precious.txt", dir / "labels/scene.png");
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", (dir / "labels").string()}});
+  sink.set_input("labels", Packet::make(LabelImage{header("scene"),
+                                                   cv::Mat(2, 3, CV_32SC1, cv::Scalar(4)), 4}));
+  sink.run();
+  EXPECT_EQ(read_text(dir / "precious.txt"), "keep me");
+  EXPECT_FALSE(std::filesystem::is_symlink(dir / "labels/scene.png"));
+  EXPECT_EQ(read_unchanged(dir / "labels/scene.png").at<std::uint16_t>(1, 2), 4);
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "labels"))
+    names.push_back(entry.path().filename().string());
+  EXPECT_EQ(names, std::vector<std::string>{"scene.png"});
+}
+
+// A write that fails (here: the folder is gone) names the file and leaves nothing behind.
+TEST(LabelsSink, AFailedWriteNamesTheFile) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", (dir / "labels").string()}});
+  sink.set_input("labels", Packet::make(LabelImage{header("gone"),
+                                                   cv::Mat(2, 3, CV_32SC1, cv::Scalar(1)), 1}));
+  sink.run();
+  std::filesystem::remove_all(dir / "labels");
+  sink.set_input("labels", Packet::make(LabelImage{header("gone"),
+                                                   cv::Mat(2, 3, CV_32SC1, cv::Scalar(1)), 1}));
+  expect_stage_error([&] { sink.run(); }, {"gone.png", "No such file"});
 }
 
 TEST(LabelsSink, FolderThatCannotBeCreatedIsAnOpenError) {
