@@ -121,6 +121,15 @@ StageSpec PcdSource::spec() {
              "Image height for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
              "organized cloud's height.",
              {.unit = "px", .min = 0.0})
+      .param("max_fit_rms_px", 1.0,
+             "Largest RMS error of the fitted intrinsics: a cloud whose points do not project "
+             "onto its WIDTH x HEIGHT grid within it (a cloud reshaped, say 320x960 for "
+             "640x480, or not from one pinhole camera) is refused rather than read into a "
+             "scrambled depth image. Only used when the intrinsics are fitted.",
+             {.unit = "px",
+              .min = 0.0,
+              .origin = "clouds written from a depth camera fit to about 0.001 px (float "
+                        "rounding); a reshaped mOSD cloud fits to tens of pixels"})
       .param("labels", "raw",
              "How label values become segment ids: raw keeps them; mosd reads the mOSD scheme "
              "(0-9 = invalid and table, 10k..10k+9 = parts of object k-1) as one id per object; "
@@ -139,6 +148,7 @@ PcdSource::PcdSource(const Params& params)
     : path_(params.get_string("path")),
       intrinsics_param_(params.get_string("intrinsics")),
       scheme_(label_scheme(params.get_string("labels"))),
+      max_fit_rms_px_(params.get_double("max_fit_rms_px")),
       playback_(params) {
   given_.fx = params.get_double("fx");
   given_.fy = params.get_double("fy");
@@ -197,6 +207,14 @@ void PcdSource::process(ProcessContext& ctx) {
           const IntrinsicsFit fit = fit_intrinsics(cloud, what);
           camera = fit.camera;
           ctx.metric("fit_rms_px", fit.rms_px);
+          if (!(fit.rms_px <= max_fit_rms_px_)) {
+            throw StageError(what + ": its points do not project onto its " +
+                             std::to_string(cloud.width) + "x" + std::to_string(cloud.height) +
+                             " grid (intrinsics fit RMS " + std::to_string(fit.rms_px) +
+                             " px, max_fit_rms_px " + std::to_string(max_fit_rms_px_) +
+                             "): are WIDTH and HEIGHT right? Give the intrinsics to read it "
+                             "anyway");
+          }
         }
         images = organized_images(cloud);
       } else {

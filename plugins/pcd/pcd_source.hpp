@@ -33,6 +33,7 @@ class PcdSource final : public Stage {
   std::string intrinsics_param_;
   CameraIntrinsics given_;  // from fx, fy, cx, cy, width, height (zeros when not given)
   LabelScheme scheme_;
+  double max_fit_rms_px_;
   io::FilePlayback playback_;
 
   // Resolved by open().

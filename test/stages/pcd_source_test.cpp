@@ -235,11 +235,11 @@ TEST(PcdSource, UnorganizedCloudIsReprojectedNearestPointWinning) {
   expect_stage_error([&] { refused.run(); }, {"u.pcd", "unorganized", "intrinsics"});
 }
 
-TEST(PcdSource, BadFilesAreNamedWithWhatPclReported) {
+TEST(PcdSource, BadFilesAreNamedWithWhatIsWrong) {
   TempDir dir;
   write_text(dir / "broken.pcd", "this is not a point cloud\n");
   Runner runner({{"path", (dir / "broken.pcd").string()}});
-  expect_stage_error([&] { runner.run(); }, {"broken.pcd", "PCL reported"});
+  expect_stage_error([&] { runner.run(); }, {"broken.pcd", "not a PCD header entry"});
 
   pcl::PointCloud<pcl::Normal> normals(2, 2);
   ASSERT_EQ(pcl::io::savePCDFileASCII((dir / "normals.pcd").string(), normals), 0);
