@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <string>
 
 #include "edges/edges_avg.hpp"
 #include "edges/edges_max.hpp"
@@ -25,9 +26,12 @@ const facet::test::RealFrame& frame() {
   return loaded;
 }
 
+// range(1): invalid_neighbours, 0 = edge (the default), 1 = skip.
 template <class EdgeStage>
 void BM_Edges(benchmark::State& state) {
-  facet::testing::StageRunner<EdgeStage> runner({{"pixels", std::int64_t{state.range(0)}}});
+  facet::testing::StageRunner<EdgeStage> runner(
+      {{"pixels", std::int64_t{state.range(0)}},
+       {"invalid_neighbours", std::string(state.range(1) == 0 ? "edge" : "skip")}});
   runner.set_input("normals", facet::Packet::make(frame().normals));
   for (auto _ : state) {
     runner.run();
@@ -38,15 +42,13 @@ void BM_Edges(benchmark::State& state) {
 }
 BENCHMARK(BM_Edges<facet::edges::MaxNormalEdges>)
     ->Name("edges.max")
-    ->ArgName("pixels")
-    ->Arg(3)
-    ->Arg(1)
+    ->ArgNames({"pixels", "skip_invalid"})
+    ->ArgsProduct({{3, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Edges<facet::edges::AvgNormalEdges>)
     ->Name("edges.avg")
-    ->ArgName("pixels")
-    ->Arg(3)
-    ->Arg(1)
+    ->ArgNames({"pixels", "skip_invalid"})
+    ->ArgsProduct({{3, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 // grow.surfaces on the edges of edges.max (pixels 3, threshold 0.89: the metric-normal value

@@ -109,9 +109,9 @@ __attribute__((target_clones("avx2", "default"))) void sum_three(const float* __
     out[i] = a[i] + b[i] + c[i];
 }
 
-// Min or mean over the 8 direction sums. A NaN anywhere among the 8·R products makes their total
-// NaN, which becomes score 0. Every pointer is a separate restrict parameter so that the loop
-// vectorises without run-time alias checks.
+// Min or mean over the 8 direction sums (InvalidNeighbours::edge). A NaN anywhere among the 8·R
+// products makes their total NaN, which becomes score 0. Every pointer is a separate restrict
+// parameter so that the loop vectorises without run-time alias checks.
 template <DirectionCombine Combine>
 __attribute__((target_clones("avx2", "default"))) void combine_directions(
     const float* __restrict d0, const float* __restrict d1, const float* __restrict d2,
@@ -132,10 +132,66 @@ __attribute__((target_clones("avx2", "default"))) void combine_directions(
   }
 }
 
+// All bits set where `sum` is a number (a direction whose R products are all valid), none
+// where it is NaN.
+inline std::uint32_t valid_bits(float sum) {
+  return 0U - static_cast<std::uint32_t>(sum < kInfinity);
+}
+
+// `value` where `mask` is set, `otherwise` elsewhere, as bit operations (see above).
+inline float select_bits(std::uint32_t mask, float value, float otherwise) {
+  return std::bit_cast<float>((std::bit_cast<std::uint32_t>(value) & mask) |
+                              (std::bit_cast<std::uint32_t>(otherwise) & ~mask));
+}
+
+// `value` where `mask` is set, 0 elsewhere.
+inline float and_bits(std::uint32_t mask, float value) {
+  return std::bit_cast<float>(std::bit_cast<std::uint32_t>(value) & mask);
+}
+
+// Min or mean over the valid ones of the 8 direction sums (InvalidNeighbours::skip): a NaN sum
+// is a direction that meets a pixel without a normal, and is left out. No valid direction (the
+// pixel has no normal itself, or lies in a hole's middle) gives score 0. `scale` is 1 / R.
+template <DirectionCombine Combine>
+__attribute__((target_clones("avx2", "default"))) void combine_valid_directions(
+    const float* __restrict d0, const float* __restrict d1, const float* __restrict d2,
+    const float* __restrict d3, const float* __restrict d4, const float* __restrict d5,
+    const float* __restrict d6, const float* __restrict d7, float scale, float* __restrict out,
+    int count) {
+  for (int i = 0; i < count; ++i) {
+    const std::uint32_t v0 = valid_bits(d0[i]), v1 = valid_bits(d1[i]), v2 = valid_bits(d2[i]),
+                        v3 = valid_bits(d3[i]), v4 = valid_bits(d4[i]), v5 = valid_bits(d5[i]),
+                        v6 = valid_bits(d6[i]), v7 = valid_bits(d7[i]);
+    const std::uint32_t any = v0 | v1 | v2 | v3 | v4 | v5 | v6 | v7;
+    float value = 0.0F;
+    if constexpr (Combine == DirectionCombine::min) {
+      value = std::min(
+          std::min(std::min(select_bits(v0, d0[i], kInfinity), select_bits(v1, d1[i], kInfinity)),
+                   std::min(select_bits(v2, d2[i], kInfinity), select_bits(v3, d3[i], kInfinity))),
+          std::min(std::min(select_bits(v4, d4[i], kInfinity), select_bits(v5, d5[i], kInfinity)),
+                   std::min(select_bits(v6, d6[i], kInfinity), select_bits(v7, d7[i], kInfinity))));
+      value *= scale;
+    } else {
+      // A select with 0 is a plain AND; the count of valid directions is the sum of the masks'
+      // lowest bits, in integers.
+      const float total = ((and_bits(v0, d0[i]) + and_bits(v1, d1[i])) +
+                           (and_bits(v2, d2[i]) + and_bits(v3, d3[i]))) +
+                          ((and_bits(v4, d4[i]) + and_bits(v5, d5[i])) +
+                           (and_bits(v6, d6[i]) + and_bits(v7, d7[i])));
+      const std::uint32_t directions = ((v0 & 1U) + (v1 & 1U) + (v2 & 1U) + (v3 & 1U)) +
+                                       ((v4 & 1U) + (v5 & 1U) + (v6 & 1U) + (v7 & 1U));
+      // Dividing by at least 1 keeps the value finite where no direction is valid; `any`
+      // zeroes it then.
+      value = total * scale / static_cast<float>(directions | (~any & 1U));
+    }
+    out[i] = and_bits(any, value);
+  }
+}
+
 // Scores the rows [row_begin, row_end) of the image (those within R of the border stay 0). The
 // products of the R rows above the first are computed first, so that bands of rows can be
 // scored independently.
-template <int R, DirectionCombine Combine>
+template <int R, DirectionCombine Combine, InvalidNeighbours Invalid>
 void score_rows(const NormalPlanes& n, int height, int row_begin, int row_end, EdgeWorkspace& work,
                 cv::Mat& score) {
   const int width = n.width;
@@ -175,18 +231,60 @@ void score_rows(const NormalPlanes& n, int height, int row_begin, int row_end, E
         sums[static_cast<std::size_t>(2 * d + 1)] = backward_sum;
       }
     }
-    constexpr float kScale = Combine == DirectionCombine::min
-                                 ? 1.0F / static_cast<float>(R)
-                                 : 1.0F / static_cast<float>(R * kDirectionCount);
-    combine_directions<Combine>(sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6],
-                                sums[7], kScale, score.ptr<float>(row) + R, interior);
+    float* out = score.ptr<float>(row) + R;
+    if constexpr (Invalid == InvalidNeighbours::skip) {
+      // The mean divides by the number of valid directions itself.
+      constexpr float kScale = 1.0F / static_cast<float>(R);
+      combine_valid_directions<Combine>(sums[0], sums[1], sums[2], sums[3], sums[4], sums[5],
+                                        sums[6], sums[7], kScale, out, interior);
+    } else {
+      constexpr float kScale = Combine == DirectionCombine::min
+                                   ? 1.0F / static_cast<float>(R)
+                                   : 1.0F / static_cast<float>(R * kDirectionCount);
+      combine_directions<Combine>(sums[0], sums[1], sums[2], sums[3], sums[4], sums[5], sums[6],
+                                  sums[7], kScale, out, interior);
+    }
+  }
+}
+
+template <int R, DirectionCombine Combine>
+void score_rows_for(InvalidNeighbours invalid, const NormalPlanes& n, int height, int row_begin,
+                    int row_end, EdgeWorkspace& work, cv::Mat& score) {
+  if (invalid == InvalidNeighbours::skip) {
+    score_rows<R, Combine, InvalidNeighbours::skip>(n, height, row_begin, row_end, work, score);
+  } else {
+    score_rows<R, Combine, InvalidNeighbours::edge>(n, height, row_begin, row_end, work, score);
+  }
+}
+
+// Scores rows [row_begin, row_end) with the kernels compiled for this reach, combination and
+// policy.
+void score_band(int reach_px, DirectionCombine combine, InvalidNeighbours invalid,
+                const NormalPlanes& planes, int height, int row_begin, int row_end,
+                EdgeWorkspace& work, cv::Mat& score) {
+  const bool take_min = combine == DirectionCombine::min;
+  if (reach_px == 1) {
+    if (take_min) {
+      score_rows_for<1, DirectionCombine::min>(invalid, planes, height, row_begin, row_end, work,
+                                               score);
+    } else {
+      score_rows_for<1, DirectionCombine::mean>(invalid, planes, height, row_begin, row_end, work,
+                                                score);
+    }
+  } else if (take_min) {
+    score_rows_for<3, DirectionCombine::min>(invalid, planes, height, row_begin, row_end, work,
+                                             score);
+  } else {
+    score_rows_for<3, DirectionCombine::mean>(invalid, planes, height, row_begin, row_end, work,
+                                              score);
   }
 }
 
 }  // namespace
 
-NormalEdgeScorer::NormalEdgeScorer(int reach_px, DirectionCombine combine)
-    : reach_px_(reach_px), combine_(combine) {
+NormalEdgeScorer::NormalEdgeScorer(int reach_px, DirectionCombine combine,
+                                   InvalidNeighbours invalid)
+    : reach_px_(reach_px), combine_(combine), invalid_(invalid) {
   if (reach_px != 1 && reach_px != 3) {
     throw std::invalid_argument("edge reach must be 1 or 3 pixels");
   }
@@ -202,26 +300,12 @@ cv::Mat NormalEdgeScorer::score(const cv::Mat& normals, ParallelRunner* runner) 
 
   const NormalPlanes planes = split_planes(normals, planes_);
   const int height = normals.rows;
-  const bool take_min = combine_ == DirectionCombine::min;
   // Bands of at least 32 rows: each recomputes the R rows of products above it.
   constexpr std::int64_t kMinBandRows = 32;
   parallel_for(runner, height, kMinBandRows, [&](std::int64_t begin, std::int64_t end) {
     const auto work = workspaces_.lease();
-    const int b = static_cast<int>(begin);
-    const int e = static_cast<int>(end);
-    if (reach_px_ == 1) {
-      if (take_min) {
-        score_rows<1, DirectionCombine::min>(planes, height, b, e, *work, result);
-      } else {
-        score_rows<1, DirectionCombine::mean>(planes, height, b, e, *work, result);
-      }
-    } else {
-      if (take_min) {
-        score_rows<3, DirectionCombine::min>(planes, height, b, e, *work, result);
-      } else {
-        score_rows<3, DirectionCombine::mean>(planes, height, b, e, *work, result);
-      }
-    }
+    score_band(reach_px_, combine_, invalid_, planes, height, static_cast<int>(begin),
+               static_cast<int>(end), *work, result);
   });
   return result;
 }

@@ -18,6 +18,17 @@ enum class DirectionCombine {
   mean,  // the 'avg' variant: smoother edge images
 };
 
+// What a direction that meets a pixel without a normal (a hole in the depth) counts for.
+enum class InvalidNeighbours {
+  // The direction is left out of the min or mean; a pixel with no valid direction scores 0. A
+  // hole is unassigned itself but is no evidence of a crease beside it: next to a one-pixel
+  // dropout line, the pixels keep the score their valid neighbours give them.
+  skip,
+  // Any invalid neighbour makes the pixel's score 0: a hole grows into an edge band R pixels
+  // wider on each side (plus the normal stage's own radius), which swallows small, far objects.
+  edge,
+};
+
 // The working memory of one band of rows being scored.
 struct EdgeWorkspace {
   std::vector<float> dots;  // |dot products| of R+1 rows, see the .cpp for the layout
@@ -27,7 +38,8 @@ struct EdgeWorkspace {
 class NormalEdgeScorer {
  public:
   // reach_px: R, the number of pixels averaged along each direction (1 or 3).
-  NormalEdgeScorer(int reach_px, DirectionCombine combine);
+  NormalEdgeScorer(int reach_px, DirectionCombine combine,
+                   InvalidNeighbours invalid = InvalidNeighbours::edge);
 
   // normals: CV_32FC3 (NaN = no normal). Returns the score, CV_32FC1 of the same size. Bands of
   // rows are scored on `runner`'s threads when one is given; the result does not depend on it.
@@ -39,6 +51,7 @@ class NormalEdgeScorer {
  private:
   int reach_px_;
   DirectionCombine combine_;
+  InvalidNeighbours invalid_;
   std::vector<float> planes_;  // normals as three planes (x, y, z), one float per pixel each
   WorkspacePool<EdgeWorkspace> workspaces_;
 };

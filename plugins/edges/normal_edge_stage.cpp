@@ -2,6 +2,7 @@
 
 #include <opencv2/core.hpp>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "facet/types/images.hpp"
@@ -14,9 +15,9 @@ StageSpec normal_edge_spec(std::string name, std::string doc) {
       .output<EdgeImage>(
           "edges",
           "score: CV_32FC1 in [0, 1], the combined mean |cosine| between neighbouring normals "
-          "(1 = flat; 0 at invalid pixels, at pixels with an invalid neighbour and at the image "
-          "border within `pixels`, never NaN). mask: CV_8UC1, 255 = edge (score <= threshold), "
-          "0 = surface.")
+          "(1 = flat; 0 at pixels without a normal and at the image border within `pixels`, and "
+          "where `invalid_neighbours` says so; never NaN). mask: CV_8UC1, 255 = edge (score <= "
+          "threshold), 0 = surface.")
       .param("pixels", 3,
              "R: how many adjacent pixels are averaged along each of the 8 directions "
              "(diagonals step k pixels in x and in y). 3 gives the broad, closed edges region "
@@ -34,11 +35,34 @@ StageSpec normal_edge_spec(std::string name, std::string doc) {
               .max = 1.0,
               .origin = "paper (theta_max = 0.85, tuned in raw-disparity space); not re-measured "
                         "for metric normals here"})
+      .param("invalid_neighbours", "edge",
+             "What a direction counts for when one of its `pixels` neighbours has no normal (a "
+             "hole in the depth, or within the normal stage's radius of one). skip: the "
+             "direction is left out, and the pixel is scored by its valid directions (0 when it "
+             "has none); a hole stays an edge itself but marks nothing around it. edge: the pixel "
+             "scores 0, so every hole grows into an edge band `pixels` wider on each side; a "
+             "dropout line along an object's outline then covers a small or far object whole.",
+             {.choices = {std::string("skip"), std::string("edge")},
+              .origin = "edge: mOSD whole objects F 0.975 (skip 0.974: pieces of an object "
+                        "beyond a hole become objects of their own); skip: generated development "
+                        "sets 0.872 -> 0.882 tuning, 0.880 -> 0.884 checking, most beyond 1.4 m "
+                        "(docs/evaluation.md, 'Holes beside surfaces')"})
       .concurrency(Concurrency::clonable);
 }
 
+namespace {
+
+InvalidNeighbours invalid_neighbours_from(const std::string& name) {
+  if (name == "skip") return InvalidNeighbours::skip;
+  if (name == "edge") return InvalidNeighbours::edge;
+  throw StageError("unknown invalid_neighbours '" + name + "' (skip, edge)");
+}
+
+}  // namespace
+
 NormalEdgeStage::NormalEdgeStage(const Params& params, DirectionCombine combine)
-    : scorer_(static_cast<int>(params.get_int("pixels")), combine),
+    : scorer_(static_cast<int>(params.get_int("pixels")), combine,
+              invalid_neighbours_from(params.get_string("invalid_neighbours"))),
       threshold_(static_cast<float>(params.get_double("threshold"))) {}
 
 void NormalEdgeStage::process(ProcessContext& ctx) {

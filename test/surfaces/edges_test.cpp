@@ -132,6 +132,57 @@ TEST(NormalEdges, InvalidNormalsAndTheirNeighboursAreEdgesWithFiniteScores) {
   }
 }
 
+// invalid_neighbours: skip leaves out the directions that meet a hole: the hole stays an edge,
+// its surroundings keep the score of their valid directions, and a crease beside it still shows.
+TEST(NormalEdges, SkippingInvalidNeighboursKeepsAHolesSurroundingsSurface) {
+  NormalImage image = constant_normals(40, 30, {0.F, 0.F, -1.F});
+  // A one-pixel dropout line, as a depth camera leaves along an object's outline.
+  for (int y = 5; y < 25; ++y)
+    image.normals.at<cv::Vec3f>(y, 20) = cv::Vec3f(kNaN, kNaN, kNaN);
+  // A crease three pixels right of the line: the normals beyond it tilt by 60 degrees.
+  for (int y = 0; y < 30; ++y) {
+    for (int x = 24; x < 40; ++x)
+      image.normals.at<cv::Vec3f>(y, x) =
+          cv::Vec3f(std::sin(static_cast<float>(CV_PI / 3)), 0.F, -0.5F);
+  }
+  const Overrides skip{{"invalid_neighbours", std::string("skip")}};
+  for (const bool avg : {false, true}) {
+    const EdgeImage skipped =
+        avg ? run_edges<edges::AvgNormalEdges>(image, skip) : run_edges(image, skip);
+    const EdgeImage banded = avg ? run_edges<edges::AvgNormalEdges>(image) : run_edges(image);
+    EXPECT_EQ(cv::checkRange(skipped.score, true, nullptr, 0.0, 1.0 + 1e-6), true);
+    // The hole itself: no normal, score 0, an edge under either policy.
+    EXPECT_EQ(skipped.score.at<float>(15, 20), 0.F);
+    EXPECT_EQ(skipped.mask.at<unsigned char>(15, 20), 255);
+    // Left of the line on the flat side: surface when skipped, an edge band when not.
+    for (int x = 17; x <= 19; ++x) {
+      EXPECT_FLOAT_EQ(skipped.score.at<float>(15, x), 1.F) << "x=" << x;
+      EXPECT_EQ(skipped.mask.at<unsigned char>(15, x), 0) << "x=" << x;
+      EXPECT_EQ(banded.mask.at<unsigned char>(15, x), 255) << "x=" << x;
+    }
+    // The crease beside the hole is still seen from its own side of it ('max': an edge).
+    EXPECT_LT(skipped.score.at<float>(15, 23), 1.F);
+    if (!avg) {
+      EXPECT_EQ(skipped.mask.at<unsigned char>(15, 23), 255);
+    }
+  }
+  // Skipping agrees with the plain reference, min and mean, here and on a real frame with holes.
+  const RealFrame frame = load_mosd_frame(kMosd, "learn0");
+  for (const NormalImage* normals : std::array<const NormalImage*, 2>{&image, &frame.normals}) {
+    for (const bool take_min : {true, false}) {
+      const EdgeImage edges =
+          take_min ? run_edges(*normals, skip) : run_edges<edges::AvgNormalEdges>(*normals, skip);
+      const cv::Mat reference = reference_edge_score(normals->normals, 3, take_min, true);
+      cv::Mat score;
+      edges.score.convertTo(score, CV_64F);
+      EXPECT_LE(cv::norm(score, reference, cv::NORM_INF), 1e-6) << (take_min ? "max" : "avg");
+    }
+  }
+  // And on the real frame, skipping marks fewer edges: the bands around its holes are gone.
+  EXPECT_LT(cv::countNonZero(run_edges(frame.normals, skip).mask),
+            cv::countNonZero(run_edges(frame.normals).mask));
+}
+
 TEST(NormalEdges, MaxScoreNeverExceedsAvgScoreOnARealFrame) {
   const RealFrame frame = load_mosd_frame(kMosd, "learn0");
   for (const int reach : {1, 3}) {
