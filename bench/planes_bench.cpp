@@ -58,8 +58,10 @@ const Prepared& frame() {
   return prepared;
 }
 
+// range(0): planes_per_patch (2, the default; 1, the paper's one plane per patch).
 void BM_SupportPlanes(benchmark::State& state) {
-  facet::testing::StageRunner<facet::planes::SupportPlaneStage> planes;
+  facet::testing::StageRunner<facet::planes::SupportPlaneStage> planes(
+      {{"planes_per_patch", std::int64_t{state.range(0)}}});
   planes.set_input("patches", frame().patches);
   planes.set_input("points", frame().points);
   for (auto _ : state) {
@@ -69,7 +71,12 @@ void BM_SupportPlanes(benchmark::State& state) {
   for (const auto& metric : planes.metrics())
     state.counters[metric.name] = metric.value;
 }
-BENCHMARK(BM_SupportPlanes)->Name("planes.support")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SupportPlanes)
+    ->Name("planes.support")
+    ->ArgName("planes_per_patch")
+    ->Arg(2)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
 
 void BM_GrowBlobs(benchmark::State& state) {
   facet::testing::StageRunner<facet::planes::SupportPlaneStage> planes;

@@ -27,6 +27,7 @@ class SupportPlaneStage final : public Stage {
   TableRule table_rule_;
   std::int64_t candidate_min_px_;
   int max_candidates_;
+  int planes_per_patch_;
   std::int64_t max_fit_points_;
   double object_face_off_plane_fraction_;
   float min_object_height_m_;

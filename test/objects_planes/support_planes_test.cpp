@@ -300,6 +300,51 @@ TEST(SupportPlanes, SameSeedSameResult) {
 // A table patch that ran onto the tops of two boxes (through gaps in the normal edges) leaves
 // one piece per top when the table takes its points: two patches, not one spanning both boxes,
 // each touching its own box's sides in the adjacency that goes with them.
+// Where no normal edge parts them (a far table running into the wall behind it, seen at a
+// grazing angle), the table and the wall are one patch. Its fit is the wall, the larger of the
+// two; what the wall leaves of the patch is fitted again, and that is the table.
+TEST(SupportPlanes, ATableAndAWallInOnePatchAreTwoPlanes) {
+  SceneBuilder scene;
+  scene.plane(kTable.table_point, kTable.up);                                 // 1: table
+  scene.plane(kTable.table_point + -0.02 * kTable.forward, -kTable.forward);  // 2: wall
+  kTable.box_on_table(scene, -0.12, -0.2, {0.05, 0.04, 0.06});                // 3
+  kTable.box_on_table(scene, 0.12, -0.14, {0.04, 0.04, 0.05});                // 4
+  const RenderedScene rendered = scene.render();
+  const PointImage points = scene_points(rendered);
+  LabelImage patches = face_patches(rendered, points);
+  // The wall's pixels join the table's patch.
+  const int table_patch = majority_label(rendered.object, 1, patches.labels);
+  const int wall_patch = majority_label(rendered.object, 2, patches.labels);
+  ASSERT_NE(table_patch, wall_patch);
+  patches.labels.setTo(table_patch, patches.labels == wall_patch);
+  // The setting this test is about: the wall outweighs the table in the merged patch.
+  ASSERT_GT(pixels_of(rendered.object, 2), pixels_of(rendered.object, 1));
+
+  const PlanesResult one = run_planes(patches, points, {{"planes_per_patch", std::int64_t{1}}});
+  const PlanesResult two = run_planes(patches, points);
+  // One plane per patch: the wall only; the table's points lie on no plane (what is called
+  // the table then is a box top).
+  const auto table_px = static_cast<double>(pixels_of(rendered.object, 1));
+  EXPECT_GT(static_cast<double>(count_where(rendered.object, 1, one.plane_labels.labels, 0)),
+            0.9 * table_px);
+  // Two: the table, whole.
+  ASSERT_NE(two.planes.table(), nullptr);
+  EXPECT_GT(two.planes.table()->normal.dot(kTable.up), std::cos(1.0 * std::numbers::pi / 180.0));
+  EXPECT_GT(static_cast<double>(two.planes.table()->inliers), 0.95 * table_px);
+  // Both planes are background: only the boxes are left for objects.
+  for (int background = 1; background <= 2; ++background) {
+    const auto total = static_cast<double>(pixels_of(rendered.object, background));
+    EXPECT_GT(static_cast<double>(count_where(rendered.object, background, two.patches.labels, 0)),
+              0.99 * total)
+        << "background " << background;
+  }
+  for (int box = 3; box <= 4; ++box) {
+    EXPECT_GT(static_cast<double>(count_where(rendered.object, box, two.plane_labels.labels, 0)),
+              0.85 * static_cast<double>(pixels_of(rendered.object, box)))
+        << "box " << box;
+  }
+}
+
 TEST(SupportPlanes, WhatTheTableLeavesOfItsPatchIsOnePatchPerPiece) {
   SceneBuilder builder;
   builder.plane(kTable.table_point, kTable.up);
