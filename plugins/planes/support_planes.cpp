@@ -111,15 +111,28 @@ std::int64_t estimate_valid_px(const cv::Mat& xyz) {
   return valid * kRowStep;
 }
 
-// The points of `candidate` farther than `distance_m` from `model`.
-std::vector<float> points_off(const Candidate& candidate, const PlaneModel& model,
-                              float distance_m) {
+// The points of `candidate` farther than `distance_m` from `model`, and the centroid of the others
+// (those on the plane).
+struct PlaneSplit {
   std::vector<float> off;
+  Eigen::Vector3f on_centroid_m = Eigen::Vector3f::Zero();
+};
+
+PlaneSplit split_by_plane(const Candidate& candidate, const PlaneModel& model, float distance_m) {
+  PlaneSplit split;
+  Eigen::Vector3d on_sum = Eigen::Vector3d::Zero();
+  std::size_t on_count = 0;
   for (std::size_t i = 0; i + 2 < candidate.points.size(); i += 3) {
-    if (std::abs(model.signed_distance_m(&candidate.points[i])) > distance_m)
-      off.insert(off.end(), &candidate.points[i], &candidate.points[i] + 3);
+    const float* p = &candidate.points[i];
+    if (std::abs(model.signed_distance_m(p)) > distance_m) {
+      split.off.insert(split.off.end(), p, p + 3);
+    } else {
+      on_sum += Eigen::Vector3d(p[0], p[1], p[2]);
+      ++on_count;
+    }
   }
-  return off;
+  if (on_count > 0) split.on_centroid_m = (on_sum / static_cast<double>(on_count)).cast<float>();
+  return split;
 }
 
 // Two fits of one patch that are the same plane (within `angle_cos` and `distance_m` at the
@@ -406,14 +419,18 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
       if (!model) break;
       const Eigen::Vector3f centroid = part.centroid_m();
       if (previous && same_plane(*previous, *model, centroid, same_plane_cos, off_plane_m)) break;
-      std::vector<float> off = points_off(part, *model, off_plane_m);
+      PlaneSplit split = split_by_plane(part, *model, off_plane_m);
       const auto sampled = static_cast<std::int64_t>(part.points.size() / 3);
       const std::int64_t off_px =
-          sampled > 0 ? part.size_px * static_cast<std::int64_t>(off.size() / 3) / sampled : 0;
-      fitted.push_back({*model, part.size_px - off_px, centroid});
-      if (off_px < candidate_min_px_) break;
+          sampled > 0 ? part.size_px * static_cast<std::int64_t>(split.off.size() / 3) / sampled
+                      : 0;
+      // A patch that holds another plane: this plane's centroid is that of its own points (the
+      // levels of the scene model compare centroids with planes), not of the whole patch.
+      const bool splits = off_px >= candidate_min_px_ && plane + 1 < planes_per_patch_;
+      fitted.push_back({*model, part.size_px - off_px, splits ? split.on_centroid_m : centroid});
+      if (!splits) break;
       previous = model;
-      part.points = std::move(off);
+      part.points = std::move(split.off);
       part.size_px = off_px;
     }
   }
