@@ -419,16 +419,21 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
       if (!model) break;
       const Eigen::Vector3f centroid = part.centroid_m();
       if (previous && same_plane(*previous, *model, centroid, same_plane_cos, off_plane_m)) break;
-      PlaneSplit split = split_by_plane(part, *model, off_plane_m);
+      // The last plane allowed, or a patch whose off-plane points are too few for another
+      // candidate, keeps the whole of what is left, size and centroid, as one plane per patch did.
+      const bool last = plane + 1 == planes_per_patch_;
+      PlaneSplit split = last ? PlaneSplit{} : split_by_plane(part, *model, off_plane_m);
       const auto sampled = static_cast<std::int64_t>(part.points.size() / 3);
       const std::int64_t off_px =
           sampled > 0 ? part.size_px * static_cast<std::int64_t>(split.off.size() / 3) / sampled
                       : 0;
-      // A patch that holds another plane: this plane's centroid is that of its own points (the
-      // levels of the scene model compare centroids with planes), not of the whole patch.
-      const bool splits = off_px >= candidate_min_px_ && plane + 1 < planes_per_patch_;
-      fitted.push_back({*model, part.size_px - off_px, splits ? split.on_centroid_m : centroid});
-      if (!splits) break;
+      if (last || off_px < candidate_min_px_) {
+        fitted.push_back({*model, part.size_px, centroid});
+        break;
+      }
+      // A patch that holds another plane: this plane takes its own points' size and centroid (the
+      // levels of the scene model compare centroids with planes), not the whole patch's.
+      fitted.push_back({*model, part.size_px - off_px, split.on_centroid_m});
       previous = model;
       part.points = std::move(split.off);
       part.size_px = off_px;
