@@ -5,6 +5,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <map>
+#include <string>
+
 #include "partition/bsp_stage.hpp"
 #include "partition/convex_stage.hpp"
 #include "partition/graph_stage.hpp"
@@ -35,9 +38,10 @@ PartitionInput scene_with_faces(int faces) {
 }
 
 template <class Stage>
-void run_stage(benchmark::State& state) {
+void run_stage(benchmark::State& state,
+               const std::map<std::string, facet::ParamValue>& overrides = {}) {
   const PartitionInput input = scene_with_faces(static_cast<int>(state.range(0)));
-  facet::testing::StageRunner<Stage> runner;
+  facet::testing::StageRunner<Stage> runner(overrides);
   runner.set_input("blobs", facet::Packet::make(input.blobs));
   runner.set_input("patches", facet::Packet::make(input.patches));
   runner.set_input("adjacency", facet::Packet::make(input.adjacency));
@@ -62,9 +66,21 @@ void BM_PartitionGraph(benchmark::State& state) {
   run_stage<facet::partition::PartitionGraph>(state);
 }
 
+// The same without the unclaimed cores, for their cost in one sitting.
+void BM_PartitionGraphNoCores(benchmark::State& state) {
+  run_stage<facet::partition::PartitionGraph>(state, {{"unclaimed_core_radius_px", 0.0}});
+}
+
 BENCHMARK(BM_PartitionBsp)->Arg(5)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PartitionConvex)->Arg(5)->Arg(20)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PartitionGraph)
+    ->Arg(5)
+    ->Arg(20)
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(200)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PartitionGraphNoCores)
     ->Arg(5)
     ->Arg(20)
     ->Arg(50)

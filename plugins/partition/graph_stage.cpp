@@ -155,6 +155,31 @@ StageSpec PartitionGraph::spec() {
       .param("max_cut_nodes", 120,
              "Groups of more nodes are not cut (the cut is cubic in the group's size).",
              {.min = 4.0, .max = 1.0e5})
+      .param("unclaimed_core_radius_px", 8.0,
+             "Blob pixels that no node of the graph claimed and that lie at least this many "
+             "pixels from every claimed pixel and from the blob's border form cores; a core of "
+             "at least unclaimed_core_min_px pixels and unclaimed_core_radius_m wide becomes an "
+             "object of its own before the left-over pixels are shared out. An edge band between "
+             "two faces of one body is about 5 px wide on each side and has no core; a body "
+             "with no patch of its own (a box on a box, a cup on a tray, a can behind a box, far "
+             "from the camera) does. A core whose points lie mostly within convex_tolerance_m of "
+             "the plane of a planar patch beside it is the rest of that face and stays with it. "
+             "0 = off: every unclaimed pixel joins the nearest object of its blob.",
+             {.unit = "px",
+              .min = 0.0,
+              .max = 1000.0,
+              .origin = "swept 7-10 on generated sets (plateau); docs/partition.md"})
+      .param("unclaimed_core_min_px", 20, "Smallest core (pixels) that becomes an object.",
+             {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "20-40 alike on generated sets"})
+      .param("unclaimed_core_radius_m", 0.03,
+             "A core must also be this wide from its widest point to the region's border in 3D "
+             "(pixels x depth / fx): near the camera a face that holes kept from becoming a "
+             "patch is wide in pixels but narrow in metres, and stays with its body.",
+             {.unit = "m",
+              .min = 0.0,
+              .max = 1.0,
+              .origin = "0.02-0.03 alike on generated sets; 0 splits a hole-riddled side face "
+                        "off mOSD learn27"})
       .param("emit_graph", false,
              "Fill the graph output. The runtime does not tell a stage whether an output is "
              "connected, so the graph is only built when asked for.")
@@ -162,6 +187,10 @@ StageSpec PartitionGraph::spec() {
 }
 
 PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(params.get_bool("emit_graph")) {
+  core_rule_ = {params.get_double("unclaimed_core_radius_px"),
+                params.get_double("unclaimed_core_radius_m"),
+                static_cast<std::int32_t>(params.get_int("unclaimed_core_min_px")),
+                params.get_double("convex_tolerance_m")};
   rule_.nodes = {static_cast<std::int32_t>(params.get_int("min_patch_px")),
                  params.get_double("planar_max_rms_m")};
   rule_.convex = params.get_bool("convex");
@@ -253,6 +282,25 @@ void PartitionGraph::process(ProcessContext& ctx) {
     for (std::int32_t k = segment.begin; k < segment.end; ++k) {
       labels[segments_.pixel[static_cast<std::size_t>(k)]] = id;
     }
+  }
+  if (core_rule_.radius_px > 0.0) {
+    // The planar faces, for the cores that continue one of them.
+    node_of_pixel_.create(blobs.labels.size(), CV_32SC1);
+    node_of_pixel_.setTo(-1);
+    face_planes_.assign(graph_.nodes.size(), FittedPlane{});
+    auto* node_of = node_of_pixel_.ptr<std::int32_t>();
+    for (std::int32_t i = 0; i < node_count; ++i) {
+      const GraphNode& node = graph_.nodes[static_cast<std::size_t>(i)];
+      if (node.segment < 0) continue;
+      if (node.planar) face_planes_[static_cast<std::size_t>(i)] = node.plane;
+      const Segment& segment = segments_.segments[static_cast<std::size_t>(node.segment)];
+      for (std::int32_t k = segment.begin; k < segment.end; ++k) {
+        node_of[segments_.pixel[static_cast<std::size_t>(k)]] = i;
+      }
+    }
+    next_id = claim_unclaimed_cores(objects.labels, blob_image, point_image, points.camera.fx,
+                                    ClaimedFaces{&node_of_pixel_, &face_planes_}, core_rule_,
+                                    core_buffers_, next_id);
   }
   fill_blob_gaps(objects.labels, blobs.labels, next_id);
   objects.count = relabel_in_raster_order(objects.labels);

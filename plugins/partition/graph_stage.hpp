@@ -9,6 +9,7 @@
 #include "facet/stage.hpp"
 #include "partition/blob_segments.hpp"
 #include "partition/convex_merge.hpp"
+#include "partition/graph_cores.hpp"
 #include "partition/graph_cut.hpp"
 #include "partition/graph_edges.hpp"
 #include "partition/graph_nodes.hpp"
@@ -35,6 +36,10 @@ class PartitionGraph final : public Stage {
  private:
   GraphRule rule_;
   bool emit_graph_;
+  CoreRule core_rule_;
+  cv::Mat node_of_pixel_;
+  std::vector<FittedPlane> face_planes_;
+  CoreBuffers core_buffers_;
   // Kept from frame to frame for their buffers only.
   BlobSegments segments_;
   PatchNeighbours neighbours_;
