@@ -45,7 +45,7 @@ StageSpec normal_edge_spec(std::string name, std::string doc) {
              {.choices = {std::string("skip"), std::string("edge")},
               .origin = "edge: mOSD whole objects F 0.975 (skip 0.974: pieces of an object "
                         "beyond a hole become objects of their own); skip: generated development "
-                        "sets 0.872 -> 0.882 tuning, 0.880 -> 0.884 checking, most beyond 1.4 m "
+                        "sets 0.872 -> 0.882 tuning, 0.881 -> 0.885 checking, most beyond 1.4 m "
                         "(docs/evaluation.md, 'Holes beside surfaces')"})
       .concurrency(Concurrency::clonable);
 }
