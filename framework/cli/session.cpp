@@ -59,9 +59,21 @@ namespace {
 
 // Loads and validates the graph with `registry`, or with the plugins its file names when
 // `registry` is null. Prints diagnostics (warnings too) to stderr.
+// Constructs and destroys every node's stage, reporting a constructor's refusal at the node.
+void construct_each_stage(const ValidatedGraph& graph, Diagnostics& diagnostics) {
+  for (const ValidatedNode& node : graph.nodes) {
+    try {
+      const auto stage = node.stage->spec.factory()(node.params);
+    } catch (const std::exception& e) {
+      diagnostics.error(node.where, "node '" + node.id + "' (" + node.stage->spec.name() +
+                                        "): its parameters were refused: " + e.what());
+    }
+  }
+}
+
 std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
-                                       const GraphOptions& graph_options,
-                                       const Registry* registry) {
+                                       const GraphOptions& graph_options, const Registry* registry,
+                                       ConstructStages construct) {
   auto loaded = std::make_unique<LoadedGraph>();
   Diagnostics diagnostics;
   LoadOptions options;
@@ -87,6 +99,9 @@ std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
   if (registry == nullptr) loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);
   const Registry& stages = registry != nullptr ? *registry : loaded->registry;
   loaded->graph = validate_graph(loaded->spec, stages, diagnostics);
+  if (construct == ConstructStages::yes && !diagnostics.has_errors()) {
+    construct_each_stage(loaded->graph, diagnostics);
+  }
   // A plugin that did not load is an error when the graph needs one of its stages (validation
   // reported that, with the failure as a note); otherwise it must not pass in silence either.
   if (registry == nullptr && !diagnostics.has_errors()) {
@@ -115,17 +130,19 @@ std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
 }  // namespace
 
 std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
-                                               const GraphOptions& graph_options) {
-  return load_with(plugins, graph_options, nullptr);
+                                               const GraphOptions& graph_options,
+                                               ConstructStages construct) {
+  return load_with(plugins, graph_options, nullptr, construct);
 }
 
 std::vector<VariantCheck> validate_variants(const LoadedGraph& base, const PluginOptions& plugins,
-                                            const GraphOptions& graph_options) {
+                                            const GraphOptions& graph_options,
+                                            ConstructStages construct) {
   std::vector<VariantCheck> checks;
   for (const std::string& variant : base.spec.variants) {
     GraphOptions options = graph_options;
     options.variant = variant;
-    checks.push_back({variant, load_with(plugins, options, &base.registry)->exit_code});
+    checks.push_back({variant, load_with(plugins, options, &base.registry, construct)->exit_code});
   }
   return checks;
 }

@@ -43,10 +43,16 @@ struct LoadedGraph {
   int exit_code = 0;
 };
 
+// Whether validation also constructs every node's stage once (and destroys it): stages parse
+// structured parameters (a workspace box, an up vector) in their constructors, so only that
+// finds their errors before a run. `validate` does it; `run` constructs the stages anyway.
+enum class ConstructStages { no, yes };
+
 // Prints diagnostics to stderr. On failure, exit_code is kInvalidGraph, or kPluginFailure when a
 // stage is missing while some plugin failed to load (the likely cause).
 std::unique_ptr<LoadedGraph> load_and_validate(const PluginOptions& plugins,
-                                               const GraphOptions& graph_options);
+                                               const GraphOptions& graph_options,
+                                               ConstructStages construct = ConstructStages::no);
 
 // Validates every variant the base graph's file defines, with the base's plugins and the same
 // --param/--set, printing each variant's diagnostics; one entry per variant, in file order.
@@ -55,6 +61,7 @@ struct VariantCheck {
   int exit_code = 0;
 };
 std::vector<VariantCheck> validate_variants(const LoadedGraph& base, const PluginOptions& plugins,
-                                            const GraphOptions& graph_options);
+                                            const GraphOptions& graph_options,
+                                            ConstructStages construct = ConstructStages::no);
 
 }  // namespace facet::cli

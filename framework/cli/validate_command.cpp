@@ -22,14 +22,15 @@ void add_validate_command(CLI::App& app, int& exit_code) {
   add_graph_options(*command, args->graph);
   add_plugin_options(*command, args->plugins);
   command->callback([args, &exit_code] {
-    const auto loaded = load_and_validate(args->plugins, args->graph);
+    const auto loaded = load_and_validate(args->plugins, args->graph, ConstructStages::yes);
     exit_code = loaded->exit_code;
     // Without --variant every variant is checked too: `compare` and `run --variant` take them,
     // and a variant's `set:` or `replace:` can be wrong while the base graph is fine. (When the
     // base graph is broken its errors would only repeat once per variant.)
     std::vector<std::string> valid_variants;
     if (args->graph.variant.empty() && exit_code == kOk) {
-      for (const VariantCheck& check : validate_variants(*loaded, args->plugins, args->graph)) {
+      for (const VariantCheck& check :
+           validate_variants(*loaded, args->plugins, args->graph, ConstructStages::yes)) {
         if (check.exit_code == kOk) {
           valid_variants.push_back(check.variant);
         } else if (exit_code == kOk) {

@@ -148,6 +148,40 @@ TEST(Cli, ValidateChecksEveryVariant) {
   EXPECT_NE(one.out.find("variant wide"), std::string::npos) << one.out;
 }
 
+// Structured parameters (a workspace box) are parsed when a stage is constructed; validate
+// constructs every node once, in every variant, so a bad value is found before a run, at the node.
+TEST(Cli, ValidateFindsAStructuredParameterTheStageRefuses) {
+  const auto graph = source_dir() / "graphs/tabletop.yaml";
+  const auto base = run_cli("validate --set blobs.workspace=1,2,3 " + shell_quote(graph.string()));
+  EXPECT_EQ(base.exit_code, 3) << base.out;
+  EXPECT_NE(base.out.find("tabletop.yaml:"), std::string::npos) << base.out;
+  EXPECT_NE(base.out.find("node 'blobs' (grow.blobs): its parameters were refused"),
+            std::string::npos)
+      << base.out;
+  EXPECT_EQ(base.out.find("is valid"), std::string::npos) << base.out;
+
+  TempDir dir("facet-cli-structured");
+  const auto variants = dir.path() / "workspace.yaml";
+  std::ofstream(variants) << "facet: 1\nname: workspace\nnodes:\n"
+                             "  source: {stage: io.frames, params: {path: data}}\n"
+                             "  median: {stage: filter.median, in: {depth: source.depth}}\n"
+                             "  points: {stage: convert.points, in: {depth: median.depth}}\n"
+                             "  normals: {stage: normals.cross, in: {depth: median.depth}}\n"
+                             "  edges: {stage: edges.max, in: {normals: normals.normals}}\n"
+                             "  patches: {stage: grow.surfaces, "
+                             "in: {edges: edges.edges, points: points.points}}\n"
+                             "  blobs: {stage: grow.blobs, "
+                             "in: {patches: patches.patches, points: points.points}}\n"
+                             "variants:\n"
+                             "  boxed: {set: {blobs.workspace: '-1,1,-1,1,0.5,2'}}\n"
+                             "  broken: {set: {blobs.workspace: '1,2,3'}}\n";
+  const auto all = run_cli("validate " + shell_quote(variants.string()));
+  EXPECT_EQ(all.exit_code, 3) << all.out;
+  EXPECT_NE(all.out.find("variant broken"), std::string::npos) << all.out;
+  EXPECT_EQ(all.out.find("variant boxed"), std::string::npos) << all.out;
+  EXPECT_EQ(run_cli("validate --variant boxed " + shell_quote(variants.string())).exit_code, 0);
+}
+
 TEST(Cli, AMistypedChoiceGetsTheClosestChoice) {
   const auto result = run_cli("validate --set normals.space=metrc " +
                               shell_quote((source_dir() / "graphs/tabletop.yaml").string()));
