@@ -67,6 +67,8 @@ std::int32_t claim_cores_in(cv::Mat objects, const cv::Mat& unclaimed, const cv:
   const cv::Mat distance_px = framed_distance_px(cv::Rect(1, 1, unclaimed.cols, unclaimed.rows));
   cv::Mat wide_enough = view_of(buffers.wide_enough, image_size, unclaimed.size(), CV_8UC1);
   cv::compare(distance_px, rule.radius_px, wide_enough, cv::CMP_GE);
+  // Most frames have none: their unclaimed pixels are edge bands.
+  if (cv::countNonZero(wide_enough) == 0) return next_id;
   cv::Mat core = view_of(buffers.core, image_size, unclaimed.size(), CV_32SC1);
   const int count = cv::connectedComponentsWithStats(wide_enough, core, buffers.stats,
                                                      buffers.centroids, 8, CV_32S);
