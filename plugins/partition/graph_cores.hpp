@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <opencv2/core/types.hpp>
 #include <vector>
 
 #include "partition/segment_plane.hpp"
@@ -35,8 +36,9 @@ struct CoreBuffers {
   cv::Mat wide_enough;
   cv::Mat core;
   cv::Mat region;
-  cv::Mat stats;
-  cv::Mat centroids;
+  std::vector<std::int32_t> core_area_px;
+  std::vector<std::int32_t> region_area_px;
+  std::vector<cv::Point> queue;
 };
 
 // `objects` (CV_32SC1, continuous) holds the ids the graph gave. The blob pixels it left at 0
