@@ -2,6 +2,8 @@
 // required inputs, cycles; then ordering the nodes for execution.
 
 #include <algorithm>
+#include <filesystem>
+#include <map>
 
 #include "facet/framework/validated_graph.hpp"
 #include "graph_order.hpp"
@@ -58,10 +60,58 @@ class GraphValidator {
         names.push_back(graph_.nodes[v].id);
       diagnostics_.error(cycle.where, "cycle: " + detail::join(names, " -> "));
     }
+    check_sink_folders();
+    // Only for a graph that is otherwise right: after errors, it would be noise.
+    if (!diagnostics_.has_errors()) warn_unread_nodes();
     return ordered_result();
   }
 
  private:
+  // Two sinks writing one folder overwrite each other's files (both name them after the frame).
+  void check_sink_folders() {
+    std::map<std::filesystem::path, const CheckedNode*> writer_of;
+    for (const auto& node : checked_) {
+      if (node.stage == nullptr || !node.stage->spec.outputs().empty() ||
+          !node.params.contains("dir")) {
+        continue;
+      }
+      const std::string& dir = node.params.get_string("dir");
+      if (dir.empty()) continue;
+      auto folder = std::filesystem::path(dir).lexically_normal();
+      if (!folder.has_filename()) folder = folder.parent_path();  // "out/" is "out"
+
+      const auto [first, inserted] = writer_of.emplace(folder, &node);
+      if (inserted) continue;
+      diagnostics_.error(node.spec->where,
+                         "node " + in_quotes(node.spec->id) + " writes to folder " +
+                             in_quotes(dir) + ", as node " + in_quotes(first->second->spec->id) +
+                             " does: their files would overwrite each other; give each sink "
+                             "its own dir");
+    }
+  }
+
+  // A node whose outputs nothing reads does work for nobody: usually a sink was forgotten or a
+  // connection names the wrong node. Sinks have no outputs; graph outputs count as readers.
+  void warn_unread_nodes() {
+    std::vector<bool> read(checked_.size(), false);
+    for (const auto& node : checked_) {
+      for (const auto& input : node.inputs) {
+        if (input && input->from_node < read.size()) read[input->from_node] = true;
+      }
+    }
+    for (const auto& port : outputs_) {
+      if (port.port.from_node < read.size()) read[port.port.from_node] = true;
+    }
+    for (std::size_t i = 0; i < checked_.size(); ++i) {
+      const CheckedNode& node = checked_[i];
+      if (read[i] || node.stage == nullptr || node.stage->spec.outputs().empty()) continue;
+      diagnostics_.warning(node.spec->where, "node " + in_quotes(node.spec->id) + " (" +
+                                                 node.spec->stage +
+                                                 "): nothing reads its outputs; connect them, "
+                                                 "or remove the node");
+    }
+  }
+
   void check_stage(CheckedNode& node) {
     const NodeSpec& spec = *node.spec;
     if (spec.stage.empty()) return;  // reported by the loader

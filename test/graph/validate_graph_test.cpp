@@ -72,6 +72,38 @@ TEST_F(ValidateGraph, TypesParamsAndKeepsDefaults) {
   EXPECT_EQ(graph.find("edges")->params.get_string("mode"), "angle");
 }
 
+// Both sinks name their files after the frame: in one folder they overwrite each other.
+TEST_F(ValidateGraph, TwoSinksWritingOneFolderAreAnError) {
+  validate(R"(facet: 1
+nodes:
+  source: {stage: io.frames, params: {path: rec}}
+  a: {stage: io.depth, in: {depth: source.depth}, params: {dir: out/depth}}
+  b: {stage: io.depth, in: {depth: source.depth}, params: {dir: out/./depth/}}
+  c: {stage: io.depth, in: {depth: source.depth}, params: {dir: out/other}}
+)");
+  EXPECT_EQ(single_error(diagnostics_),
+            "g.yaml:5:3: node 'b' writes to folder 'out/./depth/', as node 'a' does: their "
+            "files would overwrite each other; give each sink its own dir");
+}
+
+TEST_F(ValidateGraph, ANodeWhoseOutputsNothingReadsIsAWarning) {
+  const ValidatedGraph graph = validate(R"(facet: 1
+nodes:
+  source: {stage: io.frames, params: {path: rec}}
+  median: {stage: filter.median, in: {depth: source.depth}}
+  write: {stage: io.depth, in: {depth: source.depth}, params: {dir: out}}
+)");
+  EXPECT_FALSE(diagnostics_.has_errors()) << diagnostics_.str();
+  EXPECT_EQ(graph.nodes.size(), 3U);
+  EXPECT_NE(diagnostics_.str().find("g.yaml:4:3: warning: node 'median' (filter.median): nothing "
+                                    "reads its outputs"),
+            std::string::npos)
+      << diagnostics_.str();
+  // The source is read (by the sink), the sink has no outputs: no other warning.
+  EXPECT_EQ(diagnostics_.str().find("'source'"), std::string::npos) << diagnostics_.str();
+  EXPECT_EQ(diagnostics_.str().find("'write'"), std::string::npos) << diagnostics_.str();
+}
+
 TEST_F(ValidateGraph, UnknownStageSuggestsAName) {
   validate("facet: 1\nnodes:\n  m: {stage: filter.medain}\n");
   EXPECT_EQ(single_error(diagnostics_),
