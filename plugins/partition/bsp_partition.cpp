@@ -234,8 +234,7 @@ BspPartitioner::Side BspPartitioner::plane_side(const BlobSegments& points,
     const DistanceRange range = box_distance(atom.box, plane);
     if (range.low > slice || range.high < -slice) continue;
     for (std::int32_t k = atom.begin; k < atom.end; ++k) {
-      const float d =
-          plane.normal[0] * x[k] + plane.normal[1] * y[k] + plane.normal[2] * z[k] + plane.offset_m;
+      const float d = plane.signed_distance_m(x[k], y[k], z[k]);
       if (d < -slice || d > slice) continue;
       const Side s = d < -tol ? behind : (d > tol ? front : on);
       box[s].add(x[k], y[k], z[k]);
@@ -257,8 +256,7 @@ std::int32_t BspPartitioner::cut_atom(BlobSegments& points, const Atom& atom,
   std::size_t tail = n;
   for (std::int32_t k = atom.begin; k < atom.end; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    const float d = plane.normal[0] * points.x[i] + plane.normal[1] * points.y[i] +
-                    plane.normal[2] * points.z[i] + plane.offset_m;
+    const float d = plane.signed_distance_m(points.x[i], points.y[i], points.z[i]);
     const Side s = d < -tol ? behind : (d > tol ? front : plane_goes_to);
     std::size_t slot = 0;
     if (s == plane_goes_to) {

@@ -35,15 +35,11 @@ bool lies_on(const std::vector<cv::Vec3f>& core_points, const FittedPlane& plane
              double tolerance_m) {
   std::size_t on_plane = 0;
   for (const cv::Vec3f& p : core_points) {
-    const float distance =
-        plane.normal[0] * p[0] + plane.normal[1] * p[1] + plane.normal[2] * p[2] + plane.offset_m;
-    if (std::abs(distance) <= tolerance_m) ++on_plane;
+    if (std::abs(plane.signed_distance_m(p[0], p[1], p[2])) <= tolerance_m) ++on_plane;
   }
   return !core_points.empty() && 2 * on_plane >= core_points.size();
 }
 
-// The work of claim_unclaimed_cores on the rectangle that holds every unclaimed pixel and their
-// neighbours; every image here is a view of that rectangle.
 // Labels the 8-connected components of `mask` (non-zero pixels) in `labels` (CV_32SC1, same
 // size) with 1..N in raster order of their first pixel, 0 elsewhere; returns N + 1 and fills
 // area_px[label]. One thread on purpose: OpenCV's labelling runs a parallel_for of its own, which
@@ -89,6 +85,8 @@ cv::Mat view_of(cv::Mat& buffer, cv::Size full, cv::Size size, int type) {
   return buffer(cv::Rect(cv::Point(0, 0), size));
 }
 
+// The work of claim_unclaimed_cores on the rectangle that holds every unclaimed pixel and their
+// neighbours; every image here is a view of that rectangle.
 std::int32_t claim_cores_in(cv::Mat objects, const cv::Mat& unclaimed, const cv::Mat& points,
                             const cv::Mat& node_of_pixel, double fx_px,
                             const std::vector<FittedPlane>* planes, const CoreRule& rule,

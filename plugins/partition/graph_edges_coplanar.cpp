@@ -13,8 +13,7 @@ namespace facet::partition {
 namespace {
 
 double distance_to(const FittedPlane& plane, const std::array<float, 3>& point) {
-  return static_cast<double>(plane.normal[0] * point[0] + plane.normal[1] * point[1] +
-                             plane.normal[2] * point[2] + plane.offset_m);
+  return static_cast<double>(plane.signed_distance_m(point[0], point[1], point[2]));
 }
 
 }  // namespace

@@ -89,8 +89,7 @@ GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImag
         ++evidence.invalid_px;
         continue;
       }
-      const double distance = surface.normal[0] * p[0] + surface.normal[1] * p[1] +
-                              surface.normal[2] * p[2] + surface.offset_m;
+      const double distance = surface.signed_distance_m(p[0], p[1], p[2]);
       const std::int32_t blob = blob_at[v * width + u];
       if (distance > front_margin_m && blob != a.blob && blob != b.blob) {
         ++evidence.front_px;

@@ -273,32 +273,31 @@ void PartitionGraph::process(ProcessContext& ctx) {
   const std::vector<std::int32_t>& group = cut_.groups(node_count, edges_, rule_.cut);
   objects.labels = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
   auto* labels = objects.labels.ptr<std::int32_t>();
+  // The cores need each claimed pixel's node and the planar nodes' planes (a core that continues
+  // one of those faces is that face).
+  const bool cores = core_rule_.radius_px > 0.0;
+  std::int32_t* node_of = nullptr;
+  if (cores) {
+    node_of_pixel_.create(blobs.labels.size(), CV_32SC1);
+    node_of_pixel_.setTo(-1);
+    node_of = node_of_pixel_.ptr<std::int32_t>();
+    face_planes_.assign(graph_.nodes.size(), FittedPlane{});
+  }
   std::int32_t next_id = 1;
   for (std::int32_t i = 0; i < node_count; ++i) {
     const GraphNode& node = graph_.nodes[static_cast<std::size_t>(i)];
     const std::int32_t id = 1 + group[static_cast<std::size_t>(i)];
     next_id = std::max(next_id, id + 1);
     if (node.segment < 0) continue;  // a patchless blob: fill_blob_gaps gives it its own id
+    if (cores && node.planar) face_planes_[static_cast<std::size_t>(i)] = node.plane;
     const Segment& segment = segments_.segments[static_cast<std::size_t>(node.segment)];
     for (std::int32_t k = segment.begin; k < segment.end; ++k) {
-      labels[segments_.pixel[static_cast<std::size_t>(k)]] = id;
+      const std::int32_t pixel = segments_.pixel[static_cast<std::size_t>(k)];
+      labels[pixel] = id;
+      if (cores) node_of[pixel] = i;
     }
   }
-  if (core_rule_.radius_px > 0.0) {
-    // The planar faces, for the cores that continue one of them.
-    node_of_pixel_.create(blobs.labels.size(), CV_32SC1);
-    node_of_pixel_.setTo(-1);
-    face_planes_.assign(graph_.nodes.size(), FittedPlane{});
-    auto* node_of = node_of_pixel_.ptr<std::int32_t>();
-    for (std::int32_t i = 0; i < node_count; ++i) {
-      const GraphNode& node = graph_.nodes[static_cast<std::size_t>(i)];
-      if (node.segment < 0) continue;
-      if (node.planar) face_planes_[static_cast<std::size_t>(i)] = node.plane;
-      const Segment& segment = segments_.segments[static_cast<std::size_t>(node.segment)];
-      for (std::int32_t k = segment.begin; k < segment.end; ++k) {
-        node_of[segments_.pixel[static_cast<std::size_t>(k)]] = i;
-      }
-    }
+  if (cores) {
     next_id = claim_unclaimed_cores(objects.labels, blob_image, point_image, points.camera.fx,
                                     ClaimedFaces{&node_of_pixel_, &face_planes_}, core_rule_,
                                     core_buffers_, next_id);

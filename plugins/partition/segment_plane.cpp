@@ -100,8 +100,7 @@ double plane_rms_m(const BlobSegments& points, const FittedPlane& plane, std::in
   if (end <= begin) return 0.0;
   double sum = 0.0;
   for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
-    const double d = plane.normal[0] * points.x[k] + plane.normal[1] * points.y[k] +
-                     plane.normal[2] * points.z[k] + plane.offset_m;
+    const double d = plane.signed_distance_m(points.x[k], points.y[k], points.z[k]);
     sum += d * d;
   }
   return std::sqrt(sum / static_cast<double>(end - begin));

@@ -15,6 +15,11 @@ struct FittedPlane {
   float offset_m = 0.0F;
   std::array<float, 3> centroid_m{0.0F, 0.0F, 0.0F};
   bool valid = false;  // false for fewer than 3 points or a degenerate (collinear) set
+
+  // n·p + offset_m: positive in front of the plane, metres.
+  float signed_distance_m(float x, float y, float z) const {
+    return normal[0] * x + normal[1] * y + normal[2] * z + offset_m;
+  }
 };
 
 // Axis-aligned bounding box, metres.
