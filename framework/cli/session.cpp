@@ -57,8 +57,6 @@ Registry load_registry(const PluginOptions& plugins,
 
 namespace {
 
-// Loads and validates the graph with `registry`, or with the plugins its file names when
-// `registry` is null. Prints diagnostics (warnings too) to stderr.
 // Constructs and destroys every node's stage, reporting a constructor's refusal at the node.
 void construct_each_stage(const ValidatedGraph& graph, Diagnostics& diagnostics) {
   for (const ValidatedNode& node : graph.nodes) {
@@ -71,6 +69,8 @@ void construct_each_stage(const ValidatedGraph& graph, Diagnostics& diagnostics)
   }
 }
 
+// Loads and validates the graph with `registry`, or with the plugins its file names when
+// `registry` is null. Prints diagnostics (warnings too) to stderr.
 std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
                                        const GraphOptions& graph_options, const Registry* registry,
                                        ConstructStages construct) {
