@@ -164,9 +164,11 @@ CloudSink::CloudSink(const Params& params)
 
 void CloudSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
+  earlier_ = EarlierResults::survey(dir_, ".ply");
 }
 
 void CloudSink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   const auto& points = ctx.input<PointImage>("points");
   const std::filesystem::path file =
       std::filesystem::path(frame_file(dir_, points.frame)).replace_extension(".ply");

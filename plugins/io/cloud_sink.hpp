@@ -8,6 +8,7 @@
 #include <string>
 
 #include "facet/stage.hpp"
+#include "io/output_folder.hpp"
 
 namespace facet::io {
 
@@ -35,6 +36,7 @@ class CloudSink final : public Stage {
 
  private:
   std::filesystem::path dir_;
+  EarlierResults earlier_;  // what the folder held before this run
   PlyFormat format_;
   bool labelled_only_;
 };

@@ -20,9 +20,11 @@ DepthSink::DepthSink(const Params& params) : dir_(params.get_string("dir")) {}
 
 void DepthSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
+  earlier_ = EarlierResults::survey(dir_, ".png");
 }
 
 void DepthSink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   const auto& input = ctx.input<DepthImage>("depth");
   write_depth_png(ctx, frame_file(dir_, input.frame), input.depth);
 }

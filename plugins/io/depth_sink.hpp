@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "facet/stage.hpp"
+#include "io/output_folder.hpp"
 
 namespace facet::io {
 
@@ -17,6 +18,7 @@ class DepthSink final : public Stage {
 
  private:
   std::filesystem::path dir_;
+  EarlierResults earlier_;  // what the folder held before this run
 };
 
 }  // namespace facet::io

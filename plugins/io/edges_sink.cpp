@@ -27,9 +27,11 @@ EdgesSink::EdgesSink(const Params& params)
 
 void EdgesSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
+  earlier_ = EarlierResults::survey(dir_, ".png");
 }
 
 void EdgesSink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   const auto& edges = ctx.input<EdgeImage>("edges");
   const std::filesystem::path file = frame_file(dir_, edges.frame);
   const cv::Mat& source = write_score_ ? edges.score : edges.mask;

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "facet/stage.hpp"
+#include "io/output_folder.hpp"
 
 namespace facet::io {
 
@@ -18,6 +19,7 @@ class EdgesSink final : public Stage {
 
  private:
   std::filesystem::path dir_;
+  EarlierResults earlier_;  // what the folder held before this run
   bool write_score_;
 };
 

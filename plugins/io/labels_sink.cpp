@@ -21,9 +21,11 @@ LabelsSink::LabelsSink(const Params& params) : dir_(params.get_string("dir")) {}
 
 void LabelsSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
+  earlier_ = EarlierResults::survey(dir_, ".png");
 }
 
 void LabelsSink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   if (!ctx.has_input("labels")) return;
   const auto& input = ctx.input<LabelImage>("labels");
   const cv::Mat& labels = input.labels;

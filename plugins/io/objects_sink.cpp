@@ -188,9 +188,11 @@ ObjectsSink::ObjectsSink(const Params& params) : dir_(params.get_string("dir")) 
 
 void ObjectsSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
+  earlier_ = EarlierResults::survey(dir_, ".json");
 }
 
 void ObjectsSink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   if (!ctx.has_input("objects")) return;
   const auto& list = ctx.input<ObjectList>("objects");
   const std::filesystem::path file = json_file(dir_, list.frame);

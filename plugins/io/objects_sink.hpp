@@ -6,6 +6,7 @@
 
 #include "facet/stage.hpp"
 #include "facet/types/geometry.hpp"
+#include "io/output_folder.hpp"
 
 namespace facet::io {
 
@@ -19,6 +20,7 @@ class ObjectsSink final : public Stage {
 
  private:
   std::filesystem::path dir_;
+  EarlierResults earlier_;  // what the folder held before this run
 };
 
 // The JSON text io.objects writes for one frame: deterministic (fixed key order, numbers with

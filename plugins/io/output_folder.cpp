@@ -27,6 +27,31 @@ void ensure_folder(const std::filesystem::path& dir) {
   }
 }
 
+EarlierResults EarlierResults::survey(const std::filesystem::path& dir,
+                                      std::string_view extension) {
+  EarlierResults earlier;
+  earlier.dir_ = dir;
+  earlier.extension_ = std::string(extension);
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(dir, error), end; !error && it != end;
+       it.increment(error)) {
+    const std::filesystem::path& path = it->path();
+    const std::string name = path.filename().string();
+    if (name.empty() || name.front() == '.' || path.extension() != extension) continue;
+    std::error_code type_error;
+    if (it->is_regular_file(type_error)) ++earlier.files_;
+  }
+  return earlier;
+}
+
+void EarlierResults::warn_once(ProcessContext& ctx) {
+  if (told_) return;
+  told_ = true;
+  if (files_ == 0) return;
+  ctx.warn("output folder '" + dir_.string() + "' already held " + std::to_string(files_) + " " +
+           extension_ + " file(s): this run's frames replace theirs, any others stay beside them");
+}
+
 namespace {
 
 std::string system_reason() {

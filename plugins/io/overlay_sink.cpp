@@ -257,9 +257,11 @@ OverlaySink::OverlaySink(const Params& params) : dir_(params.get_string("dir")) 
 
 void OverlaySink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
+  earlier_ = EarlierResults::survey(dir_, ".png");
 }
 
 void OverlaySink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   const auto& depth = ctx.input<DepthImage>("depth");
   const std::filesystem::path file = frame_file(dir_, depth.frame);
   if (depth.depth.type() != CV_16UC1 && depth.depth.type() != CV_32FC1) {

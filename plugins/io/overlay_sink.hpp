@@ -8,6 +8,7 @@
 #include "facet/parallel.hpp"
 #include "facet/stage.hpp"
 #include "io/label_palette.hpp"
+#include "io/output_folder.hpp"
 
 namespace facet::io {
 
@@ -47,6 +48,7 @@ class OverlaySink final : public Stage {
 
  private:
   std::filesystem::path dir_;
+  EarlierResults earlier_;  // what the folder held before this run
   OverlayStyle style_;
 };
 

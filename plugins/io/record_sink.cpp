@@ -30,11 +30,13 @@ RecordSink::RecordSink(const Params& params) : dir_(params.get_string("dir")) {}
 
 void RecordSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_ / "depth");
+  earlier_ = EarlierResults::survey(dir_ / "depth", ".png");
   camera_.reset();
   label_folder_ready_ = false;
 }
 
 void RecordSink::process(ProcessContext& ctx) {
+  earlier_.warn_once(ctx);
   const auto& depth = ctx.input<DepthImage>("depth");
   const std::filesystem::path depth_file = frame_file(dir_ / "depth", depth.frame);
   if (!camera_) {

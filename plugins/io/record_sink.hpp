@@ -7,6 +7,7 @@
 
 #include "facet/stage.hpp"
 #include "facet/types/frame.hpp"
+#include "io/output_folder.hpp"
 
 namespace facet::io {
 
@@ -20,6 +21,7 @@ class RecordSink final : public Stage {
 
  private:
   std::filesystem::path dir_;
+  EarlierResults earlier_;                  // what the folder held before this run
   std::optional<CameraIntrinsics> camera_;  // of the first frame, written to intrinsics.yaml
   bool label_folder_ready_ = false;
 };

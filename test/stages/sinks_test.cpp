@@ -151,6 +151,38 @@ TEST(LabelsSink, AFailedWriteNamesTheFile) {
   expect_stage_error([&] { sink.run(); }, {"gone.png", "No such file"});
 }
 
+// A run into a folder of earlier results leaves the files of frames it does not write: the sink
+// says so once, on its first frame, with the folder and how many files it held.
+TEST(LabelsSink, SaysOnceThatTheFolderAlreadyHeldResults) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "labels");
+  write_text(dir / "labels/old1.png", "x");
+  write_text(dir / "labels/old2.png", "x");
+  write_text(dir / "labels/notes.txt", "not a result of this sink");
+  write_text(dir / "labels/.old3.png.partial-7", "an interrupted write");
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", (dir / "labels").string()}});
+  const auto frame = [](const std::string& stem) {
+    return Packet::make(LabelImage{header(stem), cv::Mat(2, 3, CV_32SC1, cv::Scalar(1)), 1});
+  };
+  sink.set_input("labels", frame("a"));
+  sink.run();
+  ASSERT_EQ(sink.warnings().size(), 1u);
+  EXPECT_NE(sink.warnings()[0].find((dir / "labels").string()), std::string::npos);
+  EXPECT_NE(sink.warnings()[0].find("already held 2 .png file"), std::string::npos);
+  sink.set_input("labels", frame("b"));
+  sink.run();
+  EXPECT_TRUE(sink.warnings().empty());
+}
+
+TEST(LabelsSink, AFreshFolderGivesNoWarning) {
+  TempDir dir;
+  facet::testing::StageRunner<facet::io::LabelsSink> sink({{"dir", (dir / "labels").string()}});
+  sink.set_input("labels",
+                 Packet::make(LabelImage{header("a"), cv::Mat(2, 3, CV_32SC1, cv::Scalar(1)), 1}));
+  sink.run();
+  EXPECT_TRUE(sink.warnings().empty());
+}
+
 TEST(LabelsSink, FolderThatCannotBeCreatedIsAnOpenError) {
   TempDir dir;
   write_text(dir / "occupied", "a file, not a folder");
