@@ -6,6 +6,8 @@
 #   scripts/quickstart.sh asan   build with AddressSanitizer + UBSan (preset `asan`) and run the suite
 #   scripts/quickstart.sh tsan   build with ThreadSanitizer (preset `tsan`) the programs that run
 #                                threads (SDK, executors, the runtime API) and run them
+#   scripts/quickstart.sh fuzz [SECONDS]  build the libFuzzer targets (preset `fuzz`, clang) and
+#                                run each for SECONDS (default 30; scripts/fuzz.sh)
 # The sanitizer presets register each test program as one CTest test (FACET_TEST_PER_PROGRAM):
 # under a sanitizer a process takes seconds to start, and the suite has over a thousand cases.
 # (tsan leaves function entry/exit uninstrumented: the ifunc resolvers of the AVX2 kernels run
@@ -74,8 +76,15 @@ case "$mode" in
     cmake --build --preset tsan -j "$(nproc)" --target "${threaded[@]}"
     ctest --preset tsan -j "$(nproc)" -R "^($(IFS='|'; echo "${threaded[*]}"))\$"
     ;;
+  fuzz)
+    # libFuzzer comes with clang's runtime libraries.
+    packages+=(clang-14 libclang-rt-14-dev)
+    install_packages
+    # A fixed seed: the same inputs on every CI run, so a red run is a finding, not a chance.
+    FACET_FUZZ_SEED=1 scripts/fuzz.sh "${2:-30}"
+    ;;
   *)
-    echo "usage: scripts/quickstart.sh run|test|asan|tsan" >&2
+    echo "usage: scripts/quickstart.sh run|test|asan|tsan|fuzz [SECONDS]" >&2
     exit 2
     ;;
 esac

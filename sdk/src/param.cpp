@@ -12,6 +12,10 @@ template <class... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+// Spelled out for compilers without class template argument deduction for aggregates (clang 14,
+// which builds the fuzz targets).
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::optional<double> numeric(const ParamValue& value) {
   if (const auto* i = std::get_if<std::int64_t>(&value)) return static_cast<double>(*i);
