@@ -6,15 +6,6 @@
 
 namespace facet::algo {
 
-std::int32_t LabelPieces::find(std::int32_t i) {
-  while (parent_[static_cast<std::size_t>(i)] != i) {
-    const auto up = static_cast<std::size_t>(parent_[static_cast<std::size_t>(i)]);
-    parent_[static_cast<std::size_t>(i)] = parent_[up];  // path halving
-    i = parent_[static_cast<std::size_t>(i)];
-  }
-  return i;
-}
-
 std::int32_t LabelPieces::split(cv::Mat& labels, std::int32_t count, const std::vector<char>& split,
                                 const cv::Mat& points, const NeighbourGate& gate) {
   if (labels.type() != CV_32SC1 || points.type() != CV_32FC3 || labels.size() != points.size() ||
@@ -49,9 +40,8 @@ std::int32_t LabelPieces::split(cv::Mat& labels, std::int32_t count, const std::
   // Union-find over the marked pixels; a root is always its piece's first pixel in raster order
   // (the smaller index wins), so the result does not depend on the order of the joins.
   const auto n = static_cast<std::int32_t>(pixels_.size());
-  parent_.resize(static_cast<std::size_t>(n));
+  pieces_.reset(static_cast<std::size_t>(n));
   for (std::int32_t k = 0; k < n; ++k) {
-    parent_[static_cast<std::size_t>(k)] = k;
     const std::int32_t i = pixels_[static_cast<std::size_t>(k)];
     if (!valid(i)) continue;
     const std::int32_t id = label[i];
@@ -62,20 +52,16 @@ std::int32_t LabelPieces::split(cv::Mat& labels, std::int32_t count, const std::
     for (const std::int32_t j : before) {
       if (j < 0 || label[j] != id || !valid(j)) continue;
       if (!gate.close(xyz + 3 * i, xyz + 3 * j)) continue;
-      std::int32_t a = find(k);
-      std::int32_t b = find(compact_[static_cast<std::size_t>(j)]);
-      if (a == b) continue;
-      if (a < b) std::swap(a, b);
-      parent_[static_cast<std::size_t>(a)] = b;
+      pieces_.unite(k, compact_[static_cast<std::size_t>(j)]);
     }
   }
 
   size_px_.assign(static_cast<std::size_t>(n), 0);
   for (std::int32_t k = 0; k < n; ++k)
-    ++size_px_[static_cast<std::size_t>(find(k))];
+    ++size_px_[static_cast<std::size_t>(pieces_.flatten(k))];
   largest_.assign(split.size(), -1);
   for (std::int32_t k = 0; k < n; ++k) {
-    if (parent_[static_cast<std::size_t>(k)] != k) continue;  // roots only, in raster order
+    if (!pieces_.is_root(k)) continue;  // roots only, in raster order
     std::int32_t& best =
         largest_[static_cast<std::size_t>(label[pixels_[static_cast<std::size_t>(k)]])];
     if (best < 0 ||
@@ -85,13 +71,14 @@ std::int32_t LabelPieces::split(cv::Mat& labels, std::int32_t count, const std::
   // New ids go to the roots (size_px_ is reused for them); then every pixel takes its root's.
   std::int32_t next = count;
   for (std::int32_t k = 0; k < n; ++k) {
-    if (parent_[static_cast<std::size_t>(k)] != k) continue;
+    if (!pieces_.is_root(k)) continue;
     const std::int32_t id = label[pixels_[static_cast<std::size_t>(k)]];
     size_px_[static_cast<std::size_t>(k)] =
         largest_[static_cast<std::size_t>(id)] == k ? id : ++next;
   }
   for (std::int32_t k = 0; k < n; ++k) {
-    label[pixels_[static_cast<std::size_t>(k)]] = size_px_[static_cast<std::size_t>(find(k))];
+    label[pixels_[static_cast<std::size_t>(k)]] =
+        size_px_[static_cast<std::size_t>(pieces_.parent(k))];
   }
   return next;
 }

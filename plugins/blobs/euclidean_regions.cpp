@@ -4,44 +4,9 @@
 #include <cstring>
 #include <vector>
 
+#include "facet/algo/disjoint_sets.hpp"
+
 namespace facet::blobs {
-namespace {
-
-// Union-find over pixel indices whose root is the smallest index of its set, i.e. the region's
-// first pixel in raster order: ids in raster order need no sorting.
-class PixelSets {
- public:
-  explicit PixelSets(std::size_t count) : parent_(count) {}
-  void make(std::size_t i) { parent_[i] = static_cast<std::int32_t>(i); }
-  std::size_t find(std::size_t i) {
-    while (static_cast<std::size_t>(parent_[i]) != i) {
-      parent_[i] = parent_[parent_[i]];  // path halving
-      i = static_cast<std::size_t>(parent_[i]);
-    }
-    return i;
-  }
-  // For pixels in raster order, once all joins are done: points i at its root and returns it.
-  std::size_t flatten(std::size_t i) {
-    parent_[i] = parent_[static_cast<std::size_t>(parent_[i])];
-    return static_cast<std::size_t>(parent_[i]);
-  }
-  // After flatten() of every member.
-  std::size_t root(std::size_t i) const { return static_cast<std::size_t>(parent_[i]); }
-  void join(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a < b) {
-      parent_[b] = static_cast<std::int32_t>(a);
-    } else if (b < a) {
-      parent_[a] = static_cast<std::int32_t>(b);
-    }
-  }
-
- private:
-  std::vector<std::int32_t> parent_;
-};
-
-}  // namespace
 
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
                                         const algo::NeighbourGate& gate, std::int64_t min_size_px) {
@@ -49,7 +14,10 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
   const int cols = mask.cols;
   const std::size_t total = mask.total();
   const auto* point = xyz.ptr<float>();
-  PixelSets sets(total);
+  // Pixel sets whose root is the set's first pixel in raster order: ids in raster order need no
+  // sorting. Only mask pixels are made.
+  algo::DisjointSets sets;
+  sets.reset_unmade(total);
 
   // Raster scan: each pixel is linked to its already visited 8-neighbours (W, NW, N, NE).
   for (int row = 0; row < rows; ++row) {
@@ -64,16 +32,17 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
         if (col >= cols || in[col] == 0) continue;
       }
       const std::size_t i = static_cast<std::size_t>(row) * cols + col;
-      sets.make(i);
+      const auto pixel = static_cast<std::int32_t>(i);
+      sets.make(pixel);
       const float* p = point + 3 * i;
-      if (col > 0 && in[col - 1] != 0 && gate.close(p, p - 3)) sets.join(i, i - 1);
+      if (col > 0 && in[col - 1] != 0 && gate.close(p, p - 3)) sets.unite(pixel, pixel - 1);
       if (above == nullptr) continue;
       const std::size_t up = i - static_cast<std::size_t>(cols);
       for (int dc = -1; dc <= 1; ++dc) {
         const int c = col + dc;
         if (c < 0 || c >= cols || above[c] == 0) continue;
         const std::size_t j = up + static_cast<std::size_t>(c - col);
-        if (gate.close(p, point + 3 * j)) sets.join(i, j);
+        if (gate.close(p, point + 3 * j)) sets.unite(pixel, static_cast<std::int32_t>(j));
       }
     }
   }
@@ -85,7 +54,7 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
   std::vector<std::int32_t> size_px(total);  // valid at roots only
   for (std::size_t i = 0; i < total; ++i) {
     if (in[i] == 0) continue;
-    const std::size_t root = sets.flatten(i);
+    const auto root = static_cast<std::size_t>(sets.flatten(static_cast<std::int32_t>(i)));
     if (root == i) size_px[i] = 0;
     ++size_px[root];
   }
@@ -100,7 +69,7 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
       label[i] = 0;
       continue;
     }
-    const std::size_t root = sets.root(i);
+    const auto root = static_cast<std::size_t>(sets.parent(static_cast<std::int32_t>(i)));
     if (root == i) {
       id_of_root[i] = size_px[i] >= min_size_px ? ++out.count : 0;
       if (id_of_root[i] != 0) out.first_px.push_back(static_cast<std::int64_t>(i));

@@ -60,24 +60,6 @@ void SurfaceRegionLabeler::find_runs(const cv::Mat& classes) {
   row_first_.back() = runs_.size();
 }
 
-std::uint32_t SurfaceRegionLabeler::find_root(std::uint32_t run) {
-  while (parent_[run] != run) {
-    parent_[run] = parent_[parent_[run]];  // path halving
-    run = parent_[run];
-  }
-  return run;
-}
-
-void SurfaceRegionLabeler::join(std::uint32_t a, std::uint32_t b) {
-  a = find_root(a);
-  b = find_root(b);
-  if (a < b) {
-    parent_[b] = a;
-  } else if (b < a) {
-    parent_[a] = b;
-  }
-}
-
 // Joins each run with the runs of the previous row it touches. With 8-connectivity, runs that
 // only meet diagonally (one ends where the other begins, one column apart) touch too.
 void SurfaceRegionLabeler::join_touching_runs(int connectivity) {
@@ -90,7 +72,7 @@ void SurfaceRegionLabeler::join_touching_runs(int connectivity) {
       while (above < above_end && runs_[above].end + slack <= run.begin)
         ++above;
       for (std::size_t j = above; j < above_end && runs_[j].begin < run.end + slack; ++j) {
-        join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
+        runs_joined_.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(j));
       }
     }
   }
@@ -106,7 +88,8 @@ void SurfaceRegionLabeler::write_labels(cv::Mat& labels) const {
          i < row_first_[static_cast<std::size_t>(row) + 1]; ++i) {
       const Run run = runs_[i];
       std::fill(out + column, out + run.begin, 0);
-      std::fill(out + run.begin, out + run.end, id_[parent_[i]]);
+      std::fill(out + run.begin, out + run.end,
+                id_[static_cast<std::size_t>(runs_joined_.parent(static_cast<std::int32_t>(i)))]);
       column = run.end;
     }
     std::fill(out + column, out + labels.cols, 0);
@@ -120,28 +103,24 @@ SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, int connectiv
     throw std::invalid_argument("connectivity must be 4 or 8");
   }
   find_runs(classes);
-  if (runs_.size() >= std::numeric_limits<std::uint32_t>::max()) {
+  if (runs_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
     throw std::invalid_argument("image too large for region labelling");
   }
   const std::size_t run_count = runs_.size();
-  parent_.resize(run_count);
-  for (std::size_t i = 0; i < run_count; ++i)
-    parent_[i] = static_cast<std::uint32_t>(i);
+  runs_joined_.reset(run_count);
   join_touching_runs(connectivity);
-  // Points every run straight at its root in one forward pass: a parent always has a smaller
-  // index, so it already points at the root when its children are visited.
-  for (std::size_t i = 0; i < run_count; ++i)
-    parent_[i] = parent_[parent_[i]];
-
+  // Every run straight at its root, in one ascending pass, and the sets' sizes.
   size_px_.assign(run_count, 0);
-  for (std::size_t i = 0; i < run_count; ++i)
-    size_px_[parent_[i]] += runs_[i].end - runs_[i].begin;
+  for (std::size_t i = 0; i < run_count; ++i) {
+    const auto root = static_cast<std::size_t>(runs_joined_.flatten(static_cast<std::int32_t>(i)));
+    size_px_[root] += runs_[i].end - runs_[i].begin;
+  }
 
   // Roots come in raster order of their first pixel; number the large enough ones.
   SurfaceRegions result;
   id_.assign(run_count, 0);
   for (std::size_t i = 0; i < run_count; ++i) {
-    if (parent_[i] == i && size_px_[i] >= min_size_px) {
+    if (runs_joined_.is_root(static_cast<std::int32_t>(i)) && size_px_[i] >= min_size_px) {
       id_[i] = ++result.count;
       result.labelled_px += size_px_[i];
     }

@@ -6,6 +6,8 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "facet/algo/disjoint_sets.hpp"
+
 namespace facet::grow {
 
 // The label image of SurfaceRegions may be read (not written) up to this many pixels before its
@@ -37,16 +39,14 @@ class SurfaceRegionLabeler {
 
   void find_runs(const cv::Mat& classes);
   void join_touching_runs(int connectivity);
-  std::uint32_t find_root(std::uint32_t run);
-  void join(std::uint32_t a, std::uint32_t b);
   void write_labels(cv::Mat& labels) const;
 
   std::vector<Run> runs_;               // in raster order
   std::vector<std::size_t> row_first_;  // index of each row's first run; one past the end last
   std::vector<std::uint64_t> bits_;     // surface pixels of one row, one bit each
-  // Union-find over run indices. The root of a set is always its smallest index, i.e. the set's
-  // first run in raster order, which gives raster-ordered region ids for free.
-  std::vector<std::uint32_t> parent_;
+  // Sets of runs. The root of a set is always its smallest index, i.e. the set's first run in
+  // raster order, which gives raster-ordered region ids for free.
+  algo::DisjointSets runs_joined_;
   std::vector<std::int64_t> size_px_;  // of the set a root run heads
   std::vector<std::int32_t> id_;       // region id of a root run, 0 = too small
 };

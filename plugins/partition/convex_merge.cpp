@@ -46,15 +46,6 @@ const std::int32_t* PatchNeighbours::end(std::int32_t patch) const {
   return neighbours_.data() + offsets_[static_cast<std::size_t>(patch) + 1];
 }
 
-std::int32_t ConvexMerger::find(std::int32_t i) {
-  while (parent_[static_cast<std::size_t>(i)] != i) {
-    parent_[static_cast<std::size_t>(i)] =
-        parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(i)])];
-    i = parent_[static_cast<std::size_t>(i)];
-  }
-  return i;
-}
-
 std::int32_t ConvexMerger::merge(const BlobSegments& points, const BlobRange& blob,
                                  const PatchNeighbours& neighbours, std::int32_t* labels,
                                  std::int32_t next_id) {
@@ -72,9 +63,7 @@ std::int32_t ConvexMerger::merge(const BlobSegments& points, const BlobRange& bl
     nodes_.push_back(node);
   }
   const auto n = static_cast<std::int32_t>(nodes_.size());
-  parent_.resize(static_cast<std::size_t>(n));
-  for (std::int32_t i = 0; i < n; ++i)
-    parent_[static_cast<std::size_t>(i)] = i;
+  groups_.reset(static_cast<std::size_t>(n));
 
   for (std::int32_t i = 0; i < n; ++i) {
     const Node& a = nodes_[static_cast<std::size_t>(i)];
@@ -86,15 +75,13 @@ std::int32_t ConvexMerger::merge(const BlobSegments& points, const BlobRange& bl
       const std::int32_t j = node_of_patch_[static_cast<std::size_t>(*it)];
       if (j < 0) continue;
       const Node& b = nodes_[static_cast<std::size_t>(j)];
-      const std::int32_t ri = find(i);
-      const std::int32_t rj = find(j);
-      if (ri == rj) continue;
+      if (groups_.find(i) == groups_.find(j)) continue;  // skips the test, not only the union
       if (!is_convex_junction(points, segment_a, a.plane,
                               points.segments[static_cast<std::size_t>(b.segment)], b.plane,
                               rule_)) {
         continue;
       }
-      parent_[static_cast<std::size_t>(std::max(ri, rj))] = std::min(ri, rj);
+      groups_.unite(i, j);
       ++merges_;
     }
   }
@@ -103,7 +90,7 @@ std::int32_t ConvexMerger::merge(const BlobSegments& points, const BlobRange& bl
   group_id_.assign(static_cast<std::size_t>(n), -1);
   std::int32_t groups = 0;
   for (std::int32_t i = 0; i < n; ++i) {
-    const std::int32_t root = find(i);
+    const std::int32_t root = groups_.find(i);
     std::int32_t& id = group_id_[static_cast<std::size_t>(root)];
     if (id < 0) id = next_id + groups++;
     const Segment& segment =

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "facet/algo/disjoint_sets.hpp"
 #include "facet/types/patches.hpp"
 #include "partition/blob_segments.hpp"
 #include "partition/segment_plane.hpp"
@@ -56,11 +57,9 @@ class ConvexMerger {
     std::int32_t segment = 0;
     FittedPlane plane;
   };
-  std::int32_t find(std::int32_t i);
-
   ConvexRule rule_;
   std::vector<Node> nodes_;
-  std::vector<std::int32_t> parent_;
+  algo::DisjointSets groups_;                // nodes joined by a convex junction
   std::vector<std::int32_t> node_of_patch_;  // -1 outside the current blob
   std::vector<std::int32_t> group_id_;
   std::int64_t merges_ = 0;

@@ -6,24 +6,13 @@
 
 namespace facet::partition {
 
-std::int32_t GraphCut::find(std::int32_t i) {
-  while (parent_[static_cast<std::size_t>(i)] != i) {
-    parent_[static_cast<std::size_t>(i)] =
-        parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(i)])];
-    i = parent_[static_cast<std::size_t>(i)];
-  }
-  return i;
-}
-
 const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
                                                   std::span<const GraphEdge> edges,
                                                   const CutRule& rule) {
   const auto n = static_cast<std::size_t>(std::max(node_count, 0));
-  parent_.resize(n);
+  groups_joined_.reset(n);
   neighbours_.assign(n, {});
   local_.assign(n, -1);
-  for (std::size_t i = 0; i < n; ++i)
-    parent_[i] = static_cast<std::int32_t>(i);
   for (const GraphEdge& edge : edges) {
     if (edge.a == edge.b || edge.a < 0 || edge.b < 0 || edge.a >= node_count ||
         edge.b >= node_count) {
@@ -31,9 +20,7 @@ const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
     }
     neighbours_[static_cast<std::size_t>(edge.a)].push_back(edge.b);
     neighbours_[static_cast<std::size_t>(edge.b)].push_back(edge.a);
-    const std::int32_t ra = find(edge.a);
-    const std::int32_t rb = find(edge.b);
-    if (ra != rb) parent_[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    groups_joined_.unite(edge.a, edge.b);
   }
   for (auto& list : neighbours_) {
     std::sort(list.begin(), list.end());
@@ -43,7 +30,7 @@ const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
   std::vector<std::vector<std::int32_t>> components;
   std::vector<std::int32_t> component_of_root(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto root = static_cast<std::size_t>(find(static_cast<std::int32_t>(i)));
+    const auto root = static_cast<std::size_t>(groups_joined_.find(static_cast<std::int32_t>(i)));
     if (component_of_root[root] < 0) {
       component_of_root[root] = static_cast<std::int32_t>(components.size());
       components.emplace_back();

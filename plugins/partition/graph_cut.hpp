@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "facet/algo/disjoint_sets.hpp"
 #include "partition/graph_edges.hpp"
 
 namespace facet::partition {
@@ -43,9 +44,8 @@ class GraphCut {
   double minimum_cut(const std::vector<std::int32_t>& members, std::vector<char>& side);
   // Whether the subgraph induced by `members` (connected) has a cycle.
   bool has_cycle(const std::vector<std::int32_t>& members);
-  std::int32_t find(std::int32_t i);
 
-  std::vector<std::int32_t> parent_;
+  algo::DisjointSets groups_joined_;  // nodes joined by an edge: the connected components
   std::vector<std::vector<std::int32_t>> neighbours_;
   std::vector<std::int32_t> group_;
   std::vector<std::int32_t> local_;  // node -> index in the current members, -1 outside

@@ -7,6 +7,7 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "facet/algo/disjoint_sets.hpp"
 #include "facet/algo/neighbour_gate.hpp"
 
 namespace facet::algo {
@@ -24,11 +25,9 @@ class LabelPieces {
                      const cv::Mat& points, const NeighbourGate& gate);
 
  private:
-  std::int32_t find(std::int32_t i);
-
   std::vector<std::int32_t> pixels_;   // the pixels to split, in raster order
   std::vector<std::int32_t> compact_;  // per pixel: its index in pixels_ (valid where marked)
-  std::vector<std::int32_t> parent_;   // per marked pixel: union-find parent
+  DisjointSets pieces_;                // over the marked pixels, by their index in pixels_
   std::vector<std::int32_t> size_px_;  // per root: its piece's size, then its new id
   std::vector<std::int32_t> largest_;  // per id: the root of its largest piece
 };
