@@ -1,100 +1,11 @@
 #include "grow/surface_regions.hpp"
 
 #include <algorithm>
-#include <cstddef>
-#include <cstring>
-#include <limits>
 #include <stdexcept>
 
 #include "grow/pixel_classes.hpp"
 
 namespace facet::grow {
-namespace {
-
-// One bit per pixel of a row, set for surface pixels (bit x % 64 of word x / 64).
-void surface_bits(const unsigned char* classes, int width, std::vector<std::uint64_t>& bits) {
-  bits.assign(static_cast<std::size_t>(width) / 64 + 1, 0);
-  int x = 0;
-  // 8 pixels at a time: classes are 0, 1 or 2 and bit 1 marks kSurfacePixel. The multiplication
-  // gathers bit 0 of byte i into bit 56 + i (the partial products never overlap).
-  for (; x + 8 <= width; x += 8) {
-    std::uint64_t word = 0;
-    std::memcpy(&word, classes + x, sizeof(word));
-    const std::uint64_t flags = (word >> 1) & 0x0101010101010101ULL;
-    const std::uint64_t byte = (flags * 0x0102040810204080ULL) >> 56;
-    bits[static_cast<std::size_t>(x / 64)] |= byte << (x % 64);
-  }
-  for (; x < width; ++x) {
-    if (classes[x] == kSurfacePixel) bits[static_cast<std::size_t>(x / 64)] |= 1ULL << (x % 64);
-  }
-}
-
-// The first column at or after `from` whose bit equals `value`, or `width`.
-int next_column(const std::vector<std::uint64_t>& bits, int from, bool value, int width) {
-  while (from < width) {
-    const std::uint64_t word = bits[static_cast<std::size_t>(from / 64)];
-    const std::uint64_t wanted = (value ? word : ~word) >> (from % 64);
-    if (wanted != 0) return std::min(from + __builtin_ctzll(wanted), width);
-    from = (from / 64 + 1) * 64;
-  }
-  return width;
-}
-
-}  // namespace
-
-// Runs of surface pixels found with bit scans: a row of 640 pixels is 10 words.
-void SurfaceRegionLabeler::find_runs(const cv::Mat& classes) {
-  runs_.clear();
-  row_first_.assign(static_cast<std::size_t>(classes.rows) + 1, 0);
-  const int width = classes.cols;
-  for (int row = 0; row < classes.rows; ++row) {
-    row_first_[static_cast<std::size_t>(row)] = runs_.size();
-    surface_bits(classes.ptr<unsigned char>(row), width, bits_);
-    int x = next_column(bits_, 0, true, width);
-    while (x < width) {
-      const int end = next_column(bits_, x, false, width);
-      runs_.push_back({x, end});
-      x = next_column(bits_, end, true, width);
-    }
-  }
-  row_first_.back() = runs_.size();
-}
-
-// Joins each run with the runs of the previous row it touches. With 8-connectivity, runs that
-// only meet diagonally (one ends where the other begins, one column apart) touch too.
-void SurfaceRegionLabeler::join_touching_runs(int connectivity) {
-  const int slack = connectivity == 8 ? 1 : 0;
-  for (std::size_t row = 1; row + 1 < row_first_.size(); ++row) {
-    std::size_t above = row_first_[row - 1];
-    const std::size_t above_end = row_first_[row];
-    for (std::size_t i = row_first_[row]; i < row_first_[row + 1]; ++i) {
-      const Run run = runs_[i];
-      while (above < above_end && runs_[above].end + slack <= run.begin)
-        ++above;
-      for (std::size_t j = above; j < above_end && runs_[j].begin < run.end + slack; ++j) {
-        runs_joined_.unite(static_cast<std::int32_t>(i), static_cast<std::int32_t>(j));
-      }
-    }
-  }
-}
-
-// Writes every pixel once, row by row: the gaps between runs as 0, each run as its region's id
-// (0 for a region under the minimum size), so the image needs no separate clearing pass.
-void SurfaceRegionLabeler::write_labels(cv::Mat& labels) const {
-  for (int row = 0; row < labels.rows; ++row) {
-    std::int32_t* out = labels.ptr<std::int32_t>(row);
-    int column = 0;
-    for (std::size_t i = row_first_[static_cast<std::size_t>(row)];
-         i < row_first_[static_cast<std::size_t>(row) + 1]; ++i) {
-      const Run run = runs_[i];
-      std::fill(out + column, out + run.begin, 0);
-      std::fill(out + run.begin, out + run.end,
-                id_[static_cast<std::size_t>(runs_joined_.parent(static_cast<std::int32_t>(i)))]);
-      column = run.end;
-    }
-    std::fill(out + column, out + labels.cols, 0);
-  }
-}
 
 SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, int connectivity,
                                            std::int64_t min_size_px) {
@@ -102,29 +13,7 @@ SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, int connectiv
   if (connectivity != 4 && connectivity != 8) {
     throw std::invalid_argument("connectivity must be 4 or 8");
   }
-  find_runs(classes);
-  if (runs_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
-    throw std::invalid_argument("image too large for region labelling");
-  }
-  const std::size_t run_count = runs_.size();
-  runs_joined_.reset(run_count);
-  join_touching_runs(connectivity);
-  // Every run straight at its root, in one ascending pass, and the sets' sizes.
-  size_px_.assign(run_count, 0);
-  for (std::size_t i = 0; i < run_count; ++i) {
-    const auto root = static_cast<std::size_t>(runs_joined_.flatten(static_cast<std::int32_t>(i)));
-    size_px_[root] += runs_[i].end - runs_[i].begin;
-  }
-
-  // Roots come in raster order of their first pixel; number the large enough ones.
   SurfaceRegions result;
-  id_.assign(run_count, 0);
-  for (std::size_t i = 0; i < run_count; ++i) {
-    if (runs_joined_.is_root(static_cast<std::int32_t>(i)) && size_px_[i] >= min_size_px) {
-      id_[i] = ++result.count;
-      result.labelled_px += size_px_[i];
-    }
-  }
   // The image lives inside a buffer with zero guard rows above and below (a whole row and
   // kLabelGuardPx more pixels, even in narrow images), so that the assignment pass can load the
   // labels around any pixel as whole vectors. A full-width row range is still a continuous image.
@@ -134,7 +23,10 @@ SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, int connectiv
   buffer.rowRange(0, guard_rows).setTo(0);
   buffer.rowRange(guard_rows + classes.rows, buffer.rows).setTo(0);
   result.labels = buffer.rowRange(guard_rows, guard_rows + classes.rows);
-  write_labels(result.labels);
+  const algo::Components regions =
+      components_.label(classes, kSurfacePixel, connectivity, min_size_px, result.labels);
+  result.count = regions.count;
+  result.labelled_px = regions.labelled_px;
   return result;
 }
 

@@ -1,12 +1,12 @@
 #pragma once
-// Connected regions of surface pixels, labelled through runs of pixels rather than pixel by
-// pixel: a region of a depth image is a few hundred runs, not tens of thousands of pixels.
+// Connected regions of surface pixels (facet::algo's component labelling), in a label image with
+// guard pixels around it for the assignment pass's vector loads.
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
-#include "facet/algo/disjoint_sets.hpp"
+#include "facet/algo/connected_components.hpp"
 
 namespace facet::grow {
 
@@ -22,8 +22,7 @@ struct SurfaceRegions {
   std::int64_t labelled_px = 0;  // pixels carrying a label
 };
 
-// Keeps its working memory (runs and their union-find) between frames, so one instance serves
-// one thread.
+// Keeps its working memory between frames, so one instance serves one thread.
 class SurfaceRegionLabeler {
  public:
   // classes: CV_8UC1 PixelClass; kSurfacePixel pixels are grown. connectivity: 4 or 8. Regions
@@ -32,23 +31,7 @@ class SurfaceRegionLabeler {
   SurfaceRegions label(const cv::Mat& classes, int connectivity, std::int64_t min_size_px);
 
  private:
-  struct Run {
-    int begin;  // first column
-    int end;    // one past the last column
-  };
-
-  void find_runs(const cv::Mat& classes);
-  void join_touching_runs(int connectivity);
-  void write_labels(cv::Mat& labels) const;
-
-  std::vector<Run> runs_;               // in raster order
-  std::vector<std::size_t> row_first_;  // index of each row's first run; one past the end last
-  std::vector<std::uint64_t> bits_;     // surface pixels of one row, one bit each
-  // Sets of runs. The root of a set is always its smallest index, i.e. the set's first run in
-  // raster order, which gives raster-ordered region ids for free.
-  algo::DisjointSets runs_joined_;
-  std::vector<std::int64_t> size_px_;  // of the set a root run heads
-  std::vector<std::int32_t> id_;       // region id of a root run, 0 = too small
+  algo::ComponentLabeler components_;
 };
 
 }  // namespace facet::grow

@@ -9,6 +9,9 @@
 namespace facet::partition {
 namespace {
 
+// The value cv::compare writes for a pixel of a mask.
+constexpr std::uint8_t kMaskSet = 255;
+
 // Pairs (unclaimed region, node) that touch as 8-neighbours, sorted and unique.
 std::vector<std::pair<std::int32_t, std::int32_t>> touching_faces(const cv::Mat& region,
                                                                   const cv::Mat& node_of_pixel) {
@@ -40,42 +43,6 @@ bool lies_on(const std::vector<cv::Vec3f>& core_points, const FittedPlane& plane
   return !core_points.empty() && 2 * on_plane >= core_points.size();
 }
 
-// Labels the 8-connected components of `mask` (non-zero pixels) in `labels` (CV_32SC1, same
-// size) with 1..N in raster order of their first pixel, 0 elsewhere; returns N + 1 and fills
-// area_px[label]. One thread on purpose: OpenCV's labelling runs a parallel_for of its own, which
-// would compete with the executor's threads (and hides its synchronisation from ThreadSanitizer).
-int label_components(const cv::Mat& mask, cv::Mat& labels, std::vector<std::int32_t>& area_px,
-                     std::vector<cv::Point>& queue) {
-  labels.setTo(0);
-  area_px.assign(1, 0);
-  int count = 1;
-  for (int v = 0; v < mask.rows; ++v) {
-    const auto* m = mask.ptr<std::uint8_t>(v);
-    for (int u = 0; u < mask.cols; ++u) {
-      if (m[u] == 0 || labels.at<std::int32_t>(v, u) != 0) continue;
-      std::int32_t area = 0;
-      labels.at<std::int32_t>(v, u) = count;
-      queue.assign(1, cv::Point(u, v));
-      for (std::size_t head = 0; head < queue.size(); ++head) {
-        const cv::Point p = queue[head];
-        ++area;
-        for (int nv = std::max(p.y - 1, 0); nv <= std::min(p.y + 1, mask.rows - 1); ++nv) {
-          const auto* nm = mask.ptr<std::uint8_t>(nv);
-          auto* nl = labels.ptr<std::int32_t>(nv);
-          for (int nu = std::max(p.x - 1, 0); nu <= std::min(p.x + 1, mask.cols - 1); ++nu) {
-            if (nm[nu] == 0 || nl[nu] != 0) continue;
-            nl[nu] = count;
-            queue.emplace_back(nu, nv);
-          }
-        }
-      }
-      area_px.push_back(area);
-      ++count;
-    }
-  }
-  return count;
-}
-
 // A view of the top left `size` of `buffer`, grown to at least `full` (reused from frame to
 // frame, so that no image is allocated per frame: fresh pages cost more than the work here).
 cv::Mat view_of(cv::Mat& buffer, cv::Size full, cv::Size size, int type) {
@@ -104,7 +71,10 @@ std::int32_t claim_cores_in(cv::Mat objects, const cv::Mat& unclaimed, const cv:
   // Most frames have none: their unclaimed pixels are edge bands.
   if (cv::countNonZero(wide_enough) == 0) return next_id;
   cv::Mat core = view_of(buffers.core, image_size, unclaimed.size(), CV_32SC1);
-  const int count = label_components(wide_enough, core, buffers.core_area_px, buffers.queue);
+  // One thread on purpose, not OpenCV's labelling: that runs a parallel_for of its own, which
+  // would compete with the executor's threads.
+  const int count =
+      buffers.components.label(wide_enough, kMaskSet, 8, 0, core).count + 1;  // with label 0
   if (count <= 1) return next_id;
 
   // Per core: its widest point (largest distance to the border) and the 3D radius there.
@@ -124,7 +94,7 @@ std::int32_t claim_cores_in(cv::Mat objects, const cv::Mat& unclaimed, const cv:
   std::vector<bool> wide(static_cast<std::size_t>(count), false);
   for (int c = 1; c < count; ++c) {
     const auto k = static_cast<std::size_t>(c);
-    wide[k] = buffers.core_area_px[k] >= rule.min_px && radius_m[k] >= rule.radius_m;
+    wide[k] = buffers.components.size_px(c) >= rule.min_px && radius_m[k] >= rule.radius_m;
   }
 
   // A wide core on the plane of a face beside it is that face's missing part.
@@ -132,7 +102,7 @@ std::int32_t claim_cores_in(cv::Mat objects, const cv::Mat& unclaimed, const cv:
   if (!node_of_pixel.empty() && planes != nullptr &&
       std::find(wide.begin(), wide.end(), true) != wide.end()) {
     cv::Mat region = view_of(buffers.region, image_size, unclaimed.size(), CV_32SC1);
-    label_components(unclaimed, region, buffers.region_area_px, buffers.queue);
+    buffers.components.label(unclaimed, kMaskSet, 8, 0, region);
     const auto touching = touching_faces(region, node_of_pixel);
     std::vector<std::int32_t> region_of(static_cast<std::size_t>(count), 0);
     std::vector<std::vector<cv::Vec3f>> core_points(static_cast<std::size_t>(count));

@@ -9,6 +9,7 @@
 #include <opencv2/core/types.hpp>
 #include <vector>
 
+#include "facet/algo/connected_components.hpp"
 #include "partition/segment_plane.hpp"
 
 namespace facet::partition {
@@ -36,9 +37,7 @@ struct CoreBuffers {
   cv::Mat wide_enough;
   cv::Mat core;
   cv::Mat region;
-  std::vector<std::int32_t> core_area_px;
-  std::vector<std::int32_t> region_area_px;
-  std::vector<cv::Point> queue;
+  algo::ComponentLabeler components;
 };
 
 // `objects` (CV_32SC1, continuous) holds the ids the graph gave. The blob pixels it left at 0
