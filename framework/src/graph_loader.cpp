@@ -216,7 +216,16 @@ GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& 
     return graph;
   }
   if (root.IsNull()) {
-    diagnostics.error({file, 0, 0}, "the graph file is empty");
+    // Only blank lines and comments: empty; anything else is text yaml-cpp read as nothing.
+    bool blank = true;
+    std::istringstream lines(yaml);
+    for (std::string line; blank && std::getline(lines, line);) {
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      blank = first == std::string::npos || line[first] == '#';
+    }
+    diagnostics.error({file, 0, 0}, blank ? "the graph file is empty"
+                                          : "the graph file holds no YAML value: a graph file is "
+                                            "a map (facet, name, params, nodes, ...)");
     return graph;
   }
   if (!root.IsMap()) {

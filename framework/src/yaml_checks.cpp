@@ -59,8 +59,10 @@ bool refuse_aliases(const std::string& yaml, const std::string& file, Diagnostic
   std::istringstream stream(yaml);
   YAML::Parser parser(stream);
   AliasFinder finder;
-  while (!finder.first_alias && parser.HandleNextDocument(finder)) {
-  }
+  // The first document only: it is the one YAML::Load reads. yaml-cpp 0.7's parser can also
+  // report a next document forever at the end of some malformed streams (a found hang: a leading
+  // ',' and a byte that is not UTF-8), so no loop over documents.
+  parser.HandleNextDocument(finder);
   if (!finder.first_alias) return true;
   const YAML::Mark& mark = *finder.first_alias;
   diagnostics.error({file, mark.line + 1, mark.column + 1},

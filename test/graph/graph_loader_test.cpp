@@ -236,6 +236,15 @@ TEST(GraphLoader, RefusesYamlAliasesAtTheirMark) {
   }
 }
 
+// Found by the graph fuzz target: on this stream yaml-cpp's parser reports a next document
+// forever, and the alias check looped over documents. The load ends, with an error.
+TEST(GraphLoader, AStrayCommaAndAByteThatIsNotUtf8EndWithAnError) {
+  Diagnostics diagnostics;
+  const GraphSpec graph = load(std::string(",acetcac: e\xa0", 12), diagnostics);
+  EXPECT_NE(single_error(diagnostics).find("holds no YAML value"), std::string::npos);
+  EXPECT_TRUE(graph.nodes.empty());
+}
+
 TEST(GraphLoader, MissingFileIsOneDiagnosticNamingIt) {
   Diagnostics diagnostics;
   load_graph_file("no/such/graph.yaml", {}, diagnostics);
