@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <sstream>
 #include <system_error>
@@ -207,7 +208,15 @@ bool parse_seconds(const std::string& text, std::int64_t& nanoseconds) {
   };
   if (whole.empty() || whole.size() > 10 || !digits(whole) || !digits(fraction)) return false;
   fraction = (fraction + "000000000").substr(0, 9);
-  nanoseconds = std::stoll(whole) * 1'000'000'000 + std::stoll(fraction);
+  // Ten digits of seconds can exceed what nanoseconds in 64 bits hold (about 9.2e9 s, the year
+  // 2262): such a time is no capture time.
+  constexpr std::int64_t kNanosecondsPerSecond = 1'000'000'000;
+  const std::int64_t seconds = std::stoll(whole);
+  const std::int64_t part = std::stoll(fraction);
+  if (seconds > (std::numeric_limits<std::int64_t>::max() - part) / kNanosecondsPerSecond) {
+    return false;
+  }
+  nanoseconds = seconds * kNanosecondsPerSecond + part;
   return true;
 }
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "stage_test_support.hpp"
@@ -96,6 +97,11 @@ TEST(FrameListing, ParsesSecondsExactlyAndConvertsDepthScales) {
   EXPECT_FALSE(facet::io::parse_seconds("1.2e3", ns));
   EXPECT_FALSE(facet::io::parse_seconds("", ns));
   EXPECT_FALSE(facet::io::parse_seconds("-1.5", ns));
+  // Found by the TUM list fuzz target: ten digits of seconds overflowed 64-bit nanoseconds.
+  EXPECT_FALSE(facet::io::parse_seconds("9305031102.160407", ns));
+  ASSERT_TRUE(facet::io::parse_seconds("9223372036.854775807", ns));
+  EXPECT_EQ(ns, std::numeric_limits<std::int64_t>::max());
+  EXPECT_FALSE(facet::io::parse_seconds("9223372036.854775808", ns));
 
   const cv::Mat tenth_mm = (cv::Mat_<std::uint16_t>(1, 3) << 0, 6005, 65535);
   const cv::Mat mm = facet::io::depth_to_millimetres(tenth_mm, 10000.0);
