@@ -18,6 +18,7 @@
 #include "option_checks.hpp"
 #include "session.hpp"
 #include "signal_stop.hpp"
+#include "warning_throttle.hpp"
 
 namespace facet::cli {
 namespace {
@@ -93,6 +94,7 @@ int run(const RunArgs& args) {
 
   RunStats stats;
   const SignalStop signals;
+  WarningThrottle warnings;
   try {
     ProgressLine progress(!args.quiet && isatty(STDERR_FILENO) == 1);
     RunOptions options;
@@ -102,6 +104,7 @@ int run(const RunArgs& args) {
         args.source_policy == "latest" ? SourcePolicy::latest : SourcePolicy::block;
     options.on_frame = [&](const FrameEvent& event) { progress.update(event); };
     options.on_warning = [&](const std::string& message) {
+      if (!warnings.admit(message)) return;
       progress.finish();
       std::cerr << message << '\n';
     };
@@ -118,8 +121,22 @@ int run(const RunArgs& args) {
     };
     stats = run_graph(args, loaded->graph, options);
   } catch (const RunError& e) {
+    for (const std::string& line : warnings.summary())
+      std::cerr << line << '\n';
     std::cerr << "\nerror: " << e.what() << '\n';
     return kRuntimeFailure;
+  }
+
+  for (const std::string& line : warnings.summary())
+    std::cerr << line << '\n';
+  // A node whose required input stayed empty is skipped without a word from the stage: its
+  // outputs (often files) are silently missing, so the run says so.
+  for (const NodeStats& node : stats.nodes) {
+    if (node.skipped == 0) continue;
+    std::cerr << fmt::format(
+        "warning: node '{}' ({}) was skipped in {} of {} frame(s): a required input was empty "
+        "(the node it reads did not set that output)\n",
+        node.id, node.stage, node.skipped, stats.frames);
   }
 
   if (!args.quiet) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <thread>
 
@@ -81,6 +82,56 @@ TEST(Run, FramesOptionLimitsTheRun) {
   ASSERT_EQ(result.exit_code, 0) << result.out;
   EXPECT_EQ(count_pngs(out.path() / "labels"), 2u);
   EXPECT_NE(read_file(json).find("\"frames\": 2"), std::string::npos);
+}
+
+// A node whose required input stays empty is skipped without a word from its stage; its files
+// are then silently missing. The run says so at the end.
+TEST(Run, ANodeSkippedBecauseItsInputWasNeverSetIsReported) {
+  TempDir out("facet-run-skipped");
+  const auto graph = out.path() / "skip.yaml";
+  {
+    std::ofstream file(graph);
+    file << "facet: 1\nname: skip\nparams: {output: x}\nnodes:\n"
+            "  source: {stage: io.frames, params: {path: "
+         << shell_quote((source_dir() / "data/mosd").string())
+         << ", labels_dir: \"\"}}\n"
+            "  labels_out: {stage: io.labels, in: {labels: source.labels}, "
+            "params: {dir: \"${output}/labels\"}}\n";
+  }
+  const auto result = run_cli("run " + shell_quote(graph.string()) +
+                              " -q --frames 3 --param output=" + shell_quote(out.path().string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("node 'labels_out' (io.labels) was skipped in 3 of 3 frame(s)"),
+            std::string::npos)
+      << result.out;
+  EXPECT_EQ(count_pngs(out.path() / "labels"), 0u);
+}
+
+// A warning on every frame is printed for the first three frames, then counted once at the end.
+TEST(Run, AWarningRepeatedOnEveryFrameIsPrintedThreeTimesThenCounted) {
+  TempDir out("facet-run-repeated");
+  const auto input = out.path() / "zero";
+  std::filesystem::create_directories(input / "depth");
+  std::filesystem::copy_file(source_dir() / "data/mosd/intrinsics.yaml", input / "intrinsics.yaml");
+  for (int i = 0; i < 7; ++i) {
+    std::string name = "z";
+    name += std::to_string(i);
+    name += ".png";
+    cv::imwrite((input / "depth" / name).string(), cv::Mat(480, 640, CV_16UC1, cv::Scalar(0)));
+  }
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) +
+                              " -q --param input=" + shell_quote(input.string()) +
+                              " --param output=" + shell_quote((out / "o").string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  std::size_t printed = 0;
+  for (std::size_t at = result.out.find("no valid depth in"); at != std::string::npos;
+       at = result.out.find("no valid depth in", at + 1))
+    ++printed;
+  EXPECT_EQ(printed, 4u) << result.out;  // frames 0, 1 and 2, and the last one in the count
+  EXPECT_NE(result.out.find("warning: node 'source': 4 more like this, not printed: no valid "
+                            "depth in 'z6.png'"),
+            std::string::npos)
+      << result.out;
 }
 
 TEST(Run, SetOverridesANodeParameter) {
