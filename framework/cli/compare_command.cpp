@@ -18,6 +18,7 @@
 #include "option_checks.hpp"
 #include "report_images.hpp"
 #include "session.hpp"
+#include "warning_throttle.hpp"
 
 namespace facet::cli {
 namespace {
@@ -213,17 +214,24 @@ int compare(const CompareArgs& args) {
   // One frame at a time: no variant's stage competes with another's for a core, and every
   // stage call of a frame sees the same caches and clock state as its neighbours.
   RunStats stats;
+  WarningThrottle warnings;
   try {
     RunOptions options;
     options.max_frames = args.frames;
     options.record_calls = true;
-    options.on_warning = [](const std::string& message) { std::cerr << message << '\n'; };
+    options.on_warning = [&warnings](const std::string& message) {
+      if (warnings.admit(message)) std::cerr << message << '\n';
+    };
     SequentialExecutor executor(graph);
     stats = executor.run(options);
   } catch (const RunError& error) {
+    for (const std::string& line : warnings.summary())
+      std::cerr << line << '\n';
     std::cerr << "error: " << error.what() << '\n';
     return kRuntimeFailure;
   }
+  for (const std::string& line : warnings.summary())
+    std::cerr << line << '\n';
   if (stats.frames <= args.warmup) {
     std::cerr << fmt::format(
         "warning: {} frame(s) run, all of them warm-up (--warmup {}): no time is reported\n",
