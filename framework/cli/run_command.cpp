@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -88,6 +89,27 @@ class ProgressLine {
   std::chrono::steady_clock::time_point last_{};
 };
 
+// Where a run's results went: the `dir` (or `path`) of every sink (a node without outputs) that
+// was called at least once, as "node → folder", in graph order.
+std::string written_places(const ValidatedGraph& graph, const RunStats& stats) {
+  std::string places;
+  for (const ValidatedNode& node : graph.nodes) {
+    if (!node.stage->spec.outputs().empty()) continue;
+    const auto ran = std::find_if(stats.nodes.begin(), stats.nodes.end(), [&](const NodeStats& n) {
+      return n.id == node.id && !n.call_ms.empty();
+    });
+    if (ran == stats.nodes.end()) continue;
+    for (const std::string_view name : {"dir", "path"}) {
+      if (!node.params.contains(name)) continue;
+      const auto* place = std::get_if<std::string>(&node.params.at(name));
+      if (place == nullptr || place->empty()) continue;
+      places += (places.empty() ? "" : ", ") + node.id + " -> " + *place;
+      break;
+    }
+  }
+  return places;
+}
+
 int run(const RunArgs& args) {
   auto loaded = load_and_validate(args.plugins, args.graph);
   if (loaded->exit_code != kOk) return loaded->exit_code;
@@ -145,6 +167,10 @@ int run(const RunArgs& args) {
                      loaded->graph.name, stats.frames, median(stats.frame_ms),
                      stats.throughput_fps())
               << (stats.dropped > 0 ? fmt::format(", {} dropped", stats.dropped) : "") << '\n';
+  }
+  if (!args.quiet) {
+    const std::string places = written_places(loaded->graph, stats);
+    if (!places.empty()) std::cerr << "wrote: " << places << '\n';
   }
   if (stats.stopped) {
     // Always said, even with --quiet: a script must learn that the input was not read to its end.

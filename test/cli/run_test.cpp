@@ -134,6 +134,20 @@ TEST(Run, AWarningRepeatedOnEveryFrameIsPrintedThreeTimesThenCounted) {
       << result.out;
 }
 
+TEST(Run, EndsBySayingWhereItWrote) {
+  TempDir out("facet-run-wrote");
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) +
+                              " --frames 1 --param output=" + shell_quote(out.path().string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("wrote: labels_out -> " + (out.path() / "labels").string() +
+                            ", objects_out -> " + (out.path() / "objects").string()),
+            std::string::npos)
+      << result.out;
+  const auto quiet = run_cli("run " + shell_quote(kTabletop.string()) +
+                             " -q --frames 1 --param output=" + shell_quote(out.path().string()));
+  EXPECT_EQ(quiet.out.find("wrote:"), std::string::npos) << quiet.out;
+}
+
 TEST(Run, SetOverridesANodeParameter) {
   TempDir out("facet-run-set");
   const auto bad = run_cli(
