@@ -9,10 +9,13 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "facet/pipeline.hpp"
 #include "facet/types/geometry.hpp"
@@ -195,6 +198,66 @@ py::dict planes_dict(const SupportPlanes& planes) {
                   "table_id"_a = planes.table_id, "table_outline_m"_a = outline);
 }
 
+// The objects as json.loads gives them from the text io.objects writes (the same layout,
+// io::write_object), built directly: a program reads what the files hold, without the cost of
+// printing the text and parsing it again, which was most of what a call added to the graph's own
+// time (docs/performance.md). Numbers are rounded to the text's 9 significant digits; a number
+// the text spells without a point or an exponent is an int, a non-finite one None, as in JSON.
+class ObjectDicts {
+ public:
+  void open_object(std::string_view key = {}) { open(key, py::dict()); }
+  void open_array(std::string_view key = {}) { open(key, py::list()); }
+  void close_object() { open_.pop_back(); }
+  void close_array() { open_.pop_back(); }
+  void number(std::string_view key, double value) { add(key, json_number(value)); }
+  template <class Vector>
+  void numbers(std::string_view key, const Vector& values) {
+    py::list list(static_cast<std::size_t>(values.size()));
+    for (Eigen::Index i = 0; i < values.size(); ++i)
+      list[static_cast<std::size_t>(i)] = json_number(values[i]);
+    add(key, std::move(list));
+  }
+  void integer(std::string_view key, long long value) { add(key, py::int_(value)); }
+  void string(std::string_view key, std::string_view value) {
+    add(key, py::str(value.data(), value.size()));
+  }
+  void null(std::string_view key) { add(key, py::none()); }
+  py::object result() const { return result_; }
+
+ private:
+  // The value json.loads gives for the text "%.9g" makes of `value`.
+  static py::object json_number(double value) {
+    if (!std::isfinite(value)) return py::none();
+    char text[32];
+    const auto end =
+        std::to_chars(text, text + sizeof text, value, std::chars_format::general, 9).ptr;
+    if (std::find_if(text, end, [](char c) { return c == '.' || c == 'e'; }) == end) {
+      long long whole = 0;
+      std::from_chars(text, end, whole);
+      return py::int_(whole);
+    }
+    double rounded = 0.0;
+    std::from_chars(text, end, rounded);
+    return py::float_(rounded);
+  }
+  void add(std::string_view key, py::object value) {
+    if (open_.empty()) {
+      result_ = std::move(value);
+    } else if (key.empty()) {
+      py::reinterpret_borrow<py::list>(open_.back()).append(value);
+    } else {
+      py::reinterpret_borrow<py::dict>(open_.back())[py::str(key.data(), key.size())] = value;
+    }
+  }
+  void open(std::string_view key, py::object container) {
+    add(key, container);
+    open_.push_back(std::move(container));
+  }
+
+  py::object result_;
+  std::vector<py::object> open_;
+};
+
 // A graph output as Python sees it.
 py::object to_python(const Packet& packet) {
   if (packet.empty()) return py::none();
@@ -215,9 +278,12 @@ py::object to_python(const Packet& packet) {
                     "mask"_a = view_of<std::uint8_t>(edges->mask, packet));
   }
   if (const auto* objects = packet.get_if<ObjectList>()) {
-    // The very text io.objects writes, so that a program reads what the files hold.
-    const auto json = py::module_::import("json");
-    return json.attr("loads")(io::objects_to_json(*objects))["objects"];
+    ObjectDicts out;
+    out.open_array();
+    for (const ObjectModel& object : objects->objects)
+      io::write_object(out, object);
+    out.close_array();
+    return out.result();
   }
   if (const auto* planes = packet.get_if<SupportPlanes>()) return planes_dict(*planes);
   throw py::type_error("graph output of type " + std::string(packet.type_key()) +
