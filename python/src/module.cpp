@@ -173,7 +173,9 @@ py::array view_of(const cv::Mat& mat, const Packet& packet) {
     strides.push_back(static_cast<py::ssize_t>(mat.elemSize1()));
   }
   py::array array(py::dtype::of<T>(), shape, strides, mat.data, base);
-  array.attr("setflags")("write"_a = false);
+  // Read-only as pybind11 makes its own read-only views of Eigen matrices: the flag is cleared
+  // directly; calling the array's setflags method took longer than making the view.
+  py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return array;
 }
 
