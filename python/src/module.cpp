@@ -179,25 +179,44 @@ py::array view_of(const cv::Mat& mat, const Packet& packet) {
   return array;
 }
 
+// dict[key] = value for the dicts built here; a literal key.
+void set_item(const py::dict& dict, const char* key, const py::object& value) {
+  if (PyDict_SetItemString(dict.ptr(), key, value.ptr()) != 0) throw py::error_already_set();
+}
+
 py::list vector_list(const Eigen::Vector3d& v) {
-  return py::cast(std::vector<double>{v.x(), v.y(), v.z()});
+  py::list list(3);
+  for (std::size_t i = 0; i < 3; ++i)
+    list[i] = py::float_(v[static_cast<Eigen::Index>(i)]);
+  return list;
 }
 
 py::dict planes_dict(const SupportPlanes& planes) {
-  py::list list;
-  for (const Plane& plane : planes.planes) {
+  py::list list(planes.planes.size());
+  for (std::size_t i = 0; i < planes.planes.size(); ++i) {
+    const Plane& plane = planes.planes[i];
     const char* role = plane.role == PlaneRole::table   ? "table"
                        : plane.role == PlaneRole::floor ? "floor"
                                                         : "wall";
-    list.append(py::dict("id"_a = plane.id, "role"_a = role, "normal"_a = vector_list(plane.normal),
-                         "offset_m"_a = plane.offset_m, "inliers"_a = plane.inliers,
-                         "rms_m"_a = plane.rms_m, "horizontal"_a = plane.horizontal));
+    py::dict item;
+    set_item(item, "id", py::int_(plane.id));
+    set_item(item, "role", py::str(role));
+    set_item(item, "normal", vector_list(plane.normal));
+    set_item(item, "offset_m", py::float_(plane.offset_m));
+    set_item(item, "inliers", py::int_(plane.inliers));
+    set_item(item, "rms_m", py::float_(plane.rms_m));
+    set_item(item, "horizontal", py::bool_(plane.horizontal));
+    list[i] = std::move(item);
   }
-  py::list outline;
-  for (const auto& point : planes.table_outline_m)
-    outline.append(vector_list(point));
-  return py::dict("planes"_a = list, "up"_a = vector_list(planes.up),
-                  "table_id"_a = planes.table_id, "table_outline_m"_a = outline);
+  py::list outline(planes.table_outline_m.size());
+  for (std::size_t i = 0; i < planes.table_outline_m.size(); ++i)
+    outline[i] = vector_list(planes.table_outline_m[i]);
+  py::dict out;
+  set_item(out, "planes", list);
+  set_item(out, "up", vector_list(planes.up));
+  set_item(out, "table_id", py::int_(planes.table_id));
+  set_item(out, "table_outline_m", outline);
+  return out;
 }
 
 // The objects as json.loads gives them from the text io.objects writes (the same layout,
