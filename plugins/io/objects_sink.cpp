@@ -104,51 +104,6 @@ class JsonText {
   bool first_ = true;
 };
 
-void write_pose(JsonText& json, const Eigen::Isometry3d& pose) {
-  json.numbers("centre_m", pose.translation());
-  const Eigen::Quaterniond q(pose.linear());
-  json.numbers("quaternion_wxyz", Eigen::Vector4d(q.w(), q.x(), q.y(), q.z()));
-  json.open_array("rotation");  // rows of the 3x3 matrix: box/superquadric axes are its columns
-  for (int row = 0; row < 3; ++row)
-    json.numbers({}, Eigen::Vector3d(pose.linear().row(row)));
-  json.close_array();
-}
-
-void write_object(JsonText& json, const ObjectModel& object) {
-  json.open_object();
-  json.integer("id", object.id);
-  json.integer("pixel_count", object.pixel_count);
-  json.numbers("centroid_m", object.centroid_m);
-  if (object.bounds_m.isEmpty()) {
-    json.null("bounds_m");
-  } else {
-    json.open_object("bounds_m");
-    json.numbers("min", object.bounds_m.min());
-    json.numbers("max", object.bounds_m.max());
-    json.close_object();
-  }
-  json.open_object("box");
-  write_pose(json, object.box.pose);
-  json.numbers("half_extents_m", object.box.half_extents_m);
-  json.number("residual_m", object.box.residual_m);
-  json.close_object();
-  json.integer("support_plane", object.support_plane);
-  const Superquadric& sq = object.superquadric;
-  if (!sq.valid) {
-    json.null("superquadric");
-  } else {
-    json.open_object("superquadric");
-    json.numbers("size_m", sq.size_m);
-    json.number("epsilon1", sq.epsilon1);
-    json.number("epsilon2", sq.epsilon2);
-    write_pose(json, sq.pose);
-    json.number("residual_m", sq.residual);
-    json.close_object();
-  }
-  json.string("grasp", to_string(object.grasp));
-  json.close_object();
-}
-
 std::filesystem::path json_file(const std::filesystem::path& dir, const FrameInfo& frame) {
   return std::filesystem::path(frame_file(dir, frame)).replace_extension(".json");
 }

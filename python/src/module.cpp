@@ -9,10 +9,13 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "facet/pipeline.hpp"
 #include "facet/types/geometry.hpp"
@@ -170,30 +173,111 @@ py::array view_of(const cv::Mat& mat, const Packet& packet) {
     strides.push_back(static_cast<py::ssize_t>(mat.elemSize1()));
   }
   py::array array(py::dtype::of<T>(), shape, strides, mat.data, base);
-  array.attr("setflags")("write"_a = false);
+  // Read-only as pybind11 makes its own read-only views of Eigen matrices: the flag is cleared
+  // directly; calling the array's setflags method took longer than making the view.
+  py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return array;
 }
 
+// dict[key] = value for the dicts built here; a literal key.
+void set_item(const py::dict& dict, const char* key, const py::object& value) {
+  if (PyDict_SetItemString(dict.ptr(), key, value.ptr()) != 0) throw py::error_already_set();
+}
+
 py::list vector_list(const Eigen::Vector3d& v) {
-  return py::cast(std::vector<double>{v.x(), v.y(), v.z()});
+  py::list list(3);
+  for (std::size_t i = 0; i < 3; ++i)
+    list[i] = py::float_(v[static_cast<Eigen::Index>(i)]);
+  return list;
 }
 
 py::dict planes_dict(const SupportPlanes& planes) {
-  py::list list;
-  for (const Plane& plane : planes.planes) {
+  py::list list(planes.planes.size());
+  for (std::size_t i = 0; i < planes.planes.size(); ++i) {
+    const Plane& plane = planes.planes[i];
     const char* role = plane.role == PlaneRole::table   ? "table"
                        : plane.role == PlaneRole::floor ? "floor"
                                                         : "wall";
-    list.append(py::dict("id"_a = plane.id, "role"_a = role, "normal"_a = vector_list(plane.normal),
-                         "offset_m"_a = plane.offset_m, "inliers"_a = plane.inliers,
-                         "rms_m"_a = plane.rms_m, "horizontal"_a = plane.horizontal));
+    py::dict item;
+    set_item(item, "id", py::int_(plane.id));
+    set_item(item, "role", py::str(role));
+    set_item(item, "normal", vector_list(plane.normal));
+    set_item(item, "offset_m", py::float_(plane.offset_m));
+    set_item(item, "inliers", py::int_(plane.inliers));
+    set_item(item, "rms_m", py::float_(plane.rms_m));
+    set_item(item, "horizontal", py::bool_(plane.horizontal));
+    list[i] = std::move(item);
   }
-  py::list outline;
-  for (const auto& point : planes.table_outline_m)
-    outline.append(vector_list(point));
-  return py::dict("planes"_a = list, "up"_a = vector_list(planes.up),
-                  "table_id"_a = planes.table_id, "table_outline_m"_a = outline);
+  py::list outline(planes.table_outline_m.size());
+  for (std::size_t i = 0; i < planes.table_outline_m.size(); ++i)
+    outline[i] = vector_list(planes.table_outline_m[i]);
+  py::dict out;
+  set_item(out, "planes", list);
+  set_item(out, "up", vector_list(planes.up));
+  set_item(out, "table_id", py::int_(planes.table_id));
+  set_item(out, "table_outline_m", outline);
+  return out;
 }
+
+// The objects as json.loads gives them from the text io.objects writes (the same layout,
+// io::write_object), built directly: a program reads what the files hold, without the cost of
+// printing the text and parsing it again, which was most of what a call added to the graph's own
+// time (docs/performance.md). Numbers are rounded to the text's 9 significant digits; a number
+// the text spells without a point or an exponent is an int, a non-finite one None, as in JSON.
+class ObjectDicts {
+ public:
+  void open_object(std::string_view key = {}) { open(key, py::dict()); }
+  void open_array(std::string_view key = {}) { open(key, py::list()); }
+  void close_object() { open_.pop_back(); }
+  void close_array() { open_.pop_back(); }
+  void number(std::string_view key, double value) { add(key, json_number(value)); }
+  template <class Vector>
+  void numbers(std::string_view key, const Vector& values) {
+    py::list list(static_cast<std::size_t>(values.size()));
+    for (Eigen::Index i = 0; i < values.size(); ++i)
+      list[static_cast<std::size_t>(i)] = json_number(values[i]);
+    add(key, std::move(list));
+  }
+  void integer(std::string_view key, long long value) { add(key, py::int_(value)); }
+  void string(std::string_view key, std::string_view value) {
+    add(key, py::str(value.data(), value.size()));
+  }
+  void null(std::string_view key) { add(key, py::none()); }
+  py::object result() const { return result_; }
+
+ private:
+  // The value json.loads gives for the text "%.9g" makes of `value`.
+  static py::object json_number(double value) {
+    if (!std::isfinite(value)) return py::none();
+    char text[32];
+    const auto end =
+        std::to_chars(text, text + sizeof text, value, std::chars_format::general, 9).ptr;
+    if (std::find_if(text, end, [](char c) { return c == '.' || c == 'e'; }) == end) {
+      long long whole = 0;
+      std::from_chars(text, end, whole);
+      return py::int_(whole);
+    }
+    double rounded = 0.0;
+    std::from_chars(text, end, rounded);
+    return py::float_(rounded);
+  }
+  void add(std::string_view key, py::object value) {
+    if (open_.empty()) {
+      result_ = std::move(value);
+    } else if (key.empty()) {
+      py::reinterpret_borrow<py::list>(open_.back()).append(value);
+    } else {
+      py::reinterpret_borrow<py::dict>(open_.back())[py::str(key.data(), key.size())] = value;
+    }
+  }
+  void open(std::string_view key, py::object container) {
+    add(key, container);
+    open_.push_back(std::move(container));
+  }
+
+  py::object result_;
+  std::vector<py::object> open_;
+};
 
 // A graph output as Python sees it.
 py::object to_python(const Packet& packet) {
@@ -215,9 +299,12 @@ py::object to_python(const Packet& packet) {
                     "mask"_a = view_of<std::uint8_t>(edges->mask, packet));
   }
   if (const auto* objects = packet.get_if<ObjectList>()) {
-    // The very text io.objects writes, so that a program reads what the files hold.
-    const auto json = py::module_::import("json");
-    return json.attr("loads")(io::objects_to_json(*objects))["objects"];
+    ObjectDicts out;
+    out.open_array();
+    for (const ObjectModel& object : objects->objects)
+      io::write_object(out, object);
+    out.close_array();
+    return out.result();
   }
   if (const auto* planes = packet.get_if<SupportPlanes>()) return planes_dict(*planes);
   throw py::type_error("graph output of type " + std::string(packet.type_key()) +
