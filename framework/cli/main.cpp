@@ -11,6 +11,7 @@
 
 int main(int argc, char** argv) {
   facet::keep_frame_buffers_mapped();
+  facet::share_one_heap_between_threads();
   CLI::App app{
       "facet — model-free 3D scene segmentation from depth images, as YAML graphs of "
       "stage plugins.",

@@ -18,4 +18,10 @@ void keep_frame_buffers_mapped() {
 #endif
 }
 
+void share_one_heap_between_threads() {
+#if defined(M_ARENA_MAX)
+  mallopt(M_ARENA_MAX, 1);
+#endif
+}
+
 }  // namespace facet

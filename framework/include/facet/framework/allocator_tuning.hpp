@@ -11,4 +11,12 @@ namespace facet {
 // No-op off glibc.
 void keep_frame_buffers_mapped();
 
+// One malloc arena for every thread of the process. With keep_frame_buffers_mapped() each
+// arena keeps its own high-water mark of frame buffers mapped, and glibc gives threads arenas
+// of their own: a two-thread soak grew 210 -> 235 MB in steps over 10 000 frames, flat with one
+// arena (188 -> 194 MB), at no measured cost in frame time (docs/performance.md, "Soak").
+// For a process that is only facet (the CLI); an embedding host decides this for its own threads
+// (MALLOC_ARENA_MAX=1 in the environment does the same). No-op off glibc.
+void share_one_heap_between_threads();
+
 }  // namespace facet
