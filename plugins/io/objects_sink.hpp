@@ -23,6 +23,10 @@ class ObjectsSink final : public Stage {
   EarlierResults earlier_;  // what the folder held before this run
 };
 
+// The file's "schema_version". 1 (files without the field): frame and objects only. 2: the
+// frame's "camera" intrinsics and each object's "support_plane_equation".
+inline constexpr int kObjectsJsonSchemaVersion = 2;
+
 // The JSON text io.objects writes for one frame: deterministic (fixed key order, numbers with
 // 9 significant digits, 2-space indentation), ending in a newline.
 std::string objects_to_json(const ObjectList& list);

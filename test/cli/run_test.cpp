@@ -56,6 +56,13 @@ TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
         out.path() / "objects" / entry.path().filename().replace_extension(".json");
     const std::string objects = read_file(object_file);
     EXPECT_NE(objects.find("\"superquadric\""), std::string::npos) << object_file;
+    // Schema 2: the bundled frames' intrinsics once, and the table every object stands on as an
+    // equation (every bundled frame has a table).
+    for (const char* key : {"\"schema_version\": 2,", "\"camera\": {", "\"fx\": 525,",
+                            "\"cy\": 239.5,", "\"width\": 640,", "\"height\": 480",
+                            "\"support_plane_equation\": {", "\"offset_m\": "}) {
+      EXPECT_NE(objects.find(key), std::string::npos) << key << " in " << object_file;
+    }
     EXPECT_NE(objects.find("\"id\": " + std::to_string(static_cast<int>(hi))), std::string::npos)
         << object_file << "\n"
         << objects.substr(0, 400);
