@@ -9,6 +9,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <thread>
 
@@ -112,6 +113,34 @@ TEST(Run, MissingInputFolderIsARuntimeFailureNamingIt) {
   EXPECT_EQ(result.exit_code, 1) << result.out;
   EXPECT_NE(result.out.find("no-such-dataset"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("source"), std::string::npos) << result.out;
+}
+
+// Input that another source stage reads: the error names that stage and how to run it, and the
+// graph it suggests exists.
+TEST(Run, APcdOrOniInputNamesTheSourceStageThatReadsIt) {
+  TempDir out("facet-run-other-source");
+  const auto cloud = out.path() / "scan.pcd";
+  const auto recording = out.path() / "take.oni";
+  std::ofstream(cloud) << "# .PCD v0.7\n";
+  std::ofstream(recording) << "not a recording";
+  const auto pcd = run_cli("run " + shell_quote(kTabletop.string()) +
+                           " --param input=" + shell_quote(cloud.string()) +
+                           " --param output=" + shell_quote((out.path() / "out").string()));
+  EXPECT_EQ(pcd.exit_code, 1) << pcd.out;
+  for (const char* text : {"node 'source' (io.frames)", "is a PCD point cloud", "io.pcd",
+                           "`facet list pcd`", "{stage: io.pcd, params: {path:"}) {
+    EXPECT_NE(pcd.out.find(text), std::string::npos) << text << "\n" << pcd.out;
+  }
+  EXPECT_EQ(pcd.out.find("not a folder"), std::string::npos) << pcd.out;
+  const auto oni = run_cli("run " + shell_quote(kTabletop.string()) +
+                           " --param input=" + shell_quote(recording.string()) +
+                           " --param output=" + shell_quote((out.path() / "out").string()));
+  EXPECT_EQ(oni.exit_code, 1) << oni.out;
+  for (const char* text : {"node 'source' (io.frames)", "is an OpenNI2 recording", "io.openni2",
+                           "facet run graphs/live.yaml --param uri="}) {
+    EXPECT_NE(oni.out.find(text), std::string::npos) << text << "\n" << oni.out;
+  }
+  EXPECT_NE(read_file(source_dir() / "graphs/live.yaml").find("uri:"), std::string::npos);
 }
 
 // A full disk: the stats and the trace went unwritten with exit 0, as the check came before the
