@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
+#include <type_traits>
+#include <variant>
 
 namespace facet {
 namespace {
@@ -61,6 +64,72 @@ std::string markdown_doc(const std::string& doc) {
   const auto newline = doc.find('\n');
   if (newline == std::string::npos) return doc;
   return doc.substr(0, newline) + "\n\n" + doc.substr(newline + 1);
+}
+
+void write_param_value(JsonWriter& json, const ParamValue& value) {
+  std::visit(
+      [&json](const auto& v) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::string>) {
+          json.value(std::string_view(v));
+        } else {
+          json.value(v);
+        }
+      },
+      value);
+}
+
+// A bound of an integer parameter is written as an integer, like its default.
+void write_bound(JsonWriter& json, const ParamSpec& param, const std::optional<double>& bound) {
+  if (!bound) {
+    json.null();
+  } else if (param.type == ParamType::integer) {
+    json.value(static_cast<std::int64_t>(*bound));
+  } else {
+    json.value(*bound);
+  }
+}
+
+void write_ports_json(JsonWriter& json, const std::vector<PortSpec>& ports, bool inputs) {
+  json.begin_array();
+  for (const auto& port : ports) {
+    json.begin_object();
+    json.key("name").value(port.name);
+    json.key("type_key").value(port.type_key);
+    if (inputs) json.key("required").value(port.required);
+    json.key("doc").value(port.doc);
+    json.end_object();
+  }
+  json.end_array();
+}
+
+void write_param_json(JsonWriter& json, const ParamSpec& param) {
+  const ParamOptions& o = param.options;
+  json.begin_object();
+  json.key("name").value(param.name);
+  json.key("type").value(to_string(param.type));
+  json.key("required").value(o.required);
+  json.key("default");
+  write_param_value(json, param.default_value);
+  json.key("min");
+  write_bound(json, param, o.min);
+  json.key("max");
+  write_bound(json, param, o.max);
+  json.key("choices");
+  if (o.choices.empty()) {
+    json.null();
+  } else {
+    json.begin_array();
+    for (const auto& choice : o.choices)
+      write_param_value(json, choice);
+    json.end_array();
+  }
+  json.key("unit");
+  o.unit.empty() ? json.null() : json.value(o.unit);
+  json.key("doc").value(param.doc);
+  json.key("default_origin");
+  o.origin.empty() ? json.null() : json.value(o.origin);
+  json.end_object();
 }
 
 }  // namespace
@@ -134,6 +203,31 @@ void write_stage_markdown(std::ostream& out, const StageEntry& entry) {
     }
     out << "\n";
   }
+}
+
+void write_stage_json(JsonWriter& json, const StageEntry& entry) {
+  const StageSpec& spec = entry.spec;
+  const PluginInfo& plugin = *entry.plugin;
+  json.begin_object();
+  json.key("name").value(spec.name());
+  json.key("summary").value(spec.summary());
+  json.key("doc").value(spec.doc());
+  json.key("plugin").begin_object();
+  json.key("name").value(plugin.name);
+  json.key("version").value(plugin.version);
+  json.key("file");
+  plugin.file.empty() ? json.null() : json.value(plugin.file.string());
+  json.end_object();
+  json.key("concurrency").value(to_string(spec.concurrency()));
+  json.key("inputs");
+  write_ports_json(json, spec.inputs(), true);
+  json.key("outputs");
+  write_ports_json(json, spec.outputs(), false);
+  json.key("parameters").begin_array();
+  for (const auto& param : spec.params())
+    write_param_json(json, param);
+  json.end_array();
+  json.end_object();
 }
 
 }  // namespace facet

@@ -11,6 +11,7 @@
 
 #include "facet/error.hpp"
 #include "io/natural_order.hpp"
+#include "io/other_sources.hpp"
 
 namespace fs = std::filesystem;
 
@@ -140,6 +141,10 @@ FrameListing list_glob(const std::string& pattern_path) {
   if (listing.depth_files.empty()) {
     throw StageError("path '" + pattern_path + "' matches no files");
   }
+  if (const OtherSource other = other_source_of_files(listing.depth_files);
+      other != OtherSource::none) {
+    throw StageError("path " + other_source_advice(other, pattern_path, PathHolds::several));
+  }
   // DIR/*-depth.png: the flat layout, whose dataset folder is DIR itself.
   if (std::all_of(listing.depth_files.begin(), listing.depth_files.end(), is_flat_depth)) {
     listing.layout = FrameLayout::flat;
@@ -156,6 +161,10 @@ FrameListing list_folder(const std::string& folder_path) {
     throw StageError("dataset folder '" + folder_path + "' does not exist");
   }
   if (fs::is_regular_file(folder, error) && folder.extension() == ".txt") return list_tum(folder);
+  if (const OtherSource other = other_source_of_file(folder);
+      other != OtherSource::none && !fs::is_directory(folder, error)) {
+    throw StageError("path " + other_source_advice(other, folder_path, PathHolds::one_file));
+  }
   if (!fs::is_directory(folder, error)) {
     throw StageError("path '" + folder_path +
                      "' is not a folder (give a dataset folder, a TUM list such as "
@@ -172,6 +181,10 @@ FrameListing list_folder(const std::string& folder_path) {
     listing.layout = FrameLayout::flat;
     listing.depth_files = regular_files(folder, is_flat_depth);
     if (listing.depth_files.empty()) {
+      if (const OtherSource other = other_source_in_folder(folder); other != OtherSource::none) {
+        throw StageError("dataset folder " +
+                         other_source_advice(other, folder_path, PathHolds::several));
+      }
       throw StageError("dataset folder '" + folder_path + "' has no depth/ folder (expected '" +
                        depth_folder.string() +
                        "/*.png'), no *-depth.png files and no TUM list (associations.txt or "

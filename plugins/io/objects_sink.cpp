@@ -108,16 +108,33 @@ std::filesystem::path json_file(const std::filesystem::path& dir, const FrameInf
   return std::filesystem::path(frame_file(dir, frame)).replace_extension(".json");
 }
 
+void write_camera(JsonText& json, const CameraIntrinsics& camera) {
+  if (!camera.valid()) {  // a list made without a camera (a test, a program's own list)
+    json.null("camera");
+    return;
+  }
+  json.open_object("camera");
+  json.number("fx", camera.fx);
+  json.number("fy", camera.fy);
+  json.number("cx", camera.cx);
+  json.number("cy", camera.cy);
+  json.integer("width", camera.width);
+  json.integer("height", camera.height);
+  json.close_object();
+}
+
 }  // namespace
 
 std::string objects_to_json(const ObjectList& list) {
   JsonText json;
   json.open_object();
+  json.integer("schema_version", kObjectsJsonSchemaVersion);
   json.open_object("frame");
   json.string("stem", list.frame.stem);
   json.integer("index", list.frame.index);
   json.integer("timestamp_ns", list.frame.timestamp_ns);
   json.close_object();
+  write_camera(json, list.camera);
   json.open_array("objects");
   for (const ObjectModel& object : list.objects)
     write_object(json, object);
@@ -129,10 +146,11 @@ std::string objects_to_json(const ObjectList& list) {
 StageSpec ObjectsSink::spec() {
   return StageSpec("io.objects",
                    "Writes each frame's object list as <dir>/<stem>.json.\n"
-                   "One file per frame (frame_<index>.json without a stem): frame stem, index "
-                   "and timestamp, and per object its id, pixel count, centroid, axis-aligned "
-                   "bounds, oriented box, support plane, superquadric and grasp prototype, in "
-                   "metres in the camera frame. Schema: docs/objects-json.md. Deterministic "
+                   "One file per frame (frame_<index>.json without a stem): schema version, "
+                   "frame stem, index and timestamp, the camera intrinsics, and per object its "
+                   "id, pixel count, centroid, axis-aligned bounds, oriented box, support plane "
+                   "id and equation, superquadric and grasp prototype, in metres in the camera "
+                   "frame. Schema: docs/objects-json.md. Deterministic "
                    "formatting, so equal lists give equal files.")
       .input<ObjectList>("objects", "Per-object shape models (shape.superquadric, shape.pca_box).")
       .param("dir", "out/objects", "Output folder, created if missing.", {.required = true})

@@ -23,6 +23,10 @@ class ObjectsSink final : public Stage {
   EarlierResults earlier_;  // what the folder held before this run
 };
 
+// The file's "schema_version". 1 (files without the field): frame and objects only. 2: the
+// frame's "camera" intrinsics and each object's "support_plane_equation".
+inline constexpr int kObjectsJsonSchemaVersion = 2;
+
 // The JSON text io.objects writes for one frame: deterministic (fixed key order, numbers with
 // 9 significant digits, 2-space indentation), ending in a newline.
 std::string objects_to_json(const ObjectList& list);
@@ -63,6 +67,14 @@ void write_object(Writer& out, const ObjectModel& object) {
   out.number("residual_m", object.box.residual_m);
   out.close_object();
   out.integer("support_plane", object.support_plane);
+  if (object.support_plane == 0) {
+    out.null("support_plane_equation");
+  } else {
+    out.open_object("support_plane_equation");  // n·x + d = 0, n towards the camera
+    out.numbers("normal", object.support_normal);
+    out.number("offset_m", object.support_offset_m);
+    out.close_object();
+  }
   const Superquadric& sq = object.superquadric;
   if (!sq.valid) {
     out.null("superquadric");

@@ -14,7 +14,8 @@ void declare_object_ports(StageSpec& spec) {
           "Support planes. When given, each object records the plane its lowest points rest on.")
       .output<ObjectList>("objects",
                           "Per object: id, pixel count, centroid, axis-aligned bounds, PCA box, "
-                          "support plane, shape model, grasp prototype (metres, camera frame).")
+                          "support plane (id and equation), shape model, grasp prototype (metres, "
+                          "camera frame).")
       .param("support_tolerance_m", 0.02,
              "An object rests on a plane when its lowest points (2nd percentile of the signed "
              "distance) are within this of it and most of it lies above.",
@@ -47,7 +48,11 @@ std::vector<ObjectGeometry> describe_objects(const LabelImage& objects, const Po
     if (planes != nullptr) {
       geometry.support = find_support_plane(geometry.points_m, planes->planes, support_tolerance_m,
                                             support_max_gap_m);
-      if (geometry.support != nullptr) model.support_plane = geometry.support->id;
+      if (geometry.support != nullptr) {
+        model.support_plane = geometry.support->id;
+        model.support_normal = geometry.support->normal;
+        model.support_offset_m = geometry.support->offset_m;
+      }
     }
     out.push_back(std::move(geometry));
   }

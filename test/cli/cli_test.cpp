@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "cli_runner.hpp"
 
 namespace facet::test {
@@ -78,6 +82,114 @@ TEST(Cli, ListShowsBundledStagesWithoutAnyEnvironment) {
   for (const char* stage : {"io.frames", "io.labels", "io.depth", "filter.median"}) {
     EXPECT_NE(result.out.find(stage), std::string::npos) << stage << "\n" << result.out;
   }
+}
+
+// Lines of `out` that start with `prefix`.
+std::vector<std::string> lines_starting_with(const std::string& out, const std::string& prefix) {
+  std::vector<std::string> lines;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(prefix, 0) == 0) lines.push_back(line);
+  }
+  return lines;
+}
+
+TEST(Cli, ListFilterKeepsTheStagesWhoseNamePluginOrSummaryMatch) {
+  const auto normals = run_cli("list NORMALS", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(normals.exit_code, 0) << normals.out;
+  // By name (normals.cross, normals.pca), and by summary ("... deviation of surface normals").
+  EXPECT_GE(lines_starting_with(normals.out, "normals.cross ").size(), 1u) << normals.out;
+  EXPECT_GE(lines_starting_with(normals.out, "normals.pca ").size(), 1u) << normals.out;
+  EXPECT_GE(lines_starting_with(normals.out, "eval.normal_stability ").size(), 1u) << normals.out;
+  EXPECT_NE(normals.out.find("facet_normals"), std::string::npos) << normals.out;
+  EXPECT_EQ(normals.out.find("io.frames"), std::string::npos) << normals.out;
+  EXPECT_EQ(normals.out.find("filter.median"), std::string::npos) << normals.out;
+  // By plugin: every stage of facet_io, each on one line.
+  const auto io = run_cli("list facet_io", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(io.exit_code, 0) << io.out;
+  for (const char* stage : {"io.frames", "io.labels", "io.objects"}) {
+    EXPECT_EQ(lines_starting_with(io.out, std::string(stage) + " ").size(), 1u) << stage << "\n"
+                                                                                << io.out;
+  }
+  EXPECT_EQ(io.out.find("normals.cross"), std::string::npos) << io.out;
+  const auto all = run_cli("list", "env -u FACET_PLUGIN_PATH");
+  EXPECT_GT(all.out.size(), io.out.size());
+}
+
+TEST(Cli, ListFilterThatMatchesNothingSaysSoAndSuggests) {
+  const auto result = run_cli("list medain", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.out.find("error: no stage's name, plugin or summary contains 'medain'; did you "
+                            "mean 'median'"),
+            std::string::npos)
+      << result.out;
+  const auto family = run_cli("list normls", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(family.exit_code, 2) << family.out;
+  EXPECT_NE(family.out.find("did you mean 'normals'"), std::string::npos) << family.out;
+  const auto nothing = run_cli("list zzzzzzzzzz", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(nothing.exit_code, 2) << nothing.out;
+  EXPECT_NE(nothing.out.find("contains 'zzzzzzzzzz'\n"), std::string::npos) << nothing.out;
+}
+
+TEST(Cli, InspectAFamilyListsItsAlternatives) {
+  const auto result = run_cli("inspect normals", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  // normals.cross and normals.pca, and normals.integral where PCL was found.
+  const auto lines = lines_starting_with(result.out, "  normals.");
+  ASSERT_GE(lines.size(), 2u) << result.out;
+  EXPECT_EQ(
+      result.out.rfind(
+          "normals: " + std::to_string(lines.size()) + " stages, alternatives for one node", 0),
+      0u)
+      << result.out;
+  EXPECT_EQ(lines_starting_with(result.out, "  ").size(), lines.size()) << result.out;
+  EXPECT_NE(lines.front().find("normals.cross"), std::string::npos) << result.out;
+  EXPECT_NE(lines.front().find("facet_normals"), std::string::npos) << result.out;
+  EXPECT_NE(lines.back().find("normals.pca"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("parameters:"), std::string::npos) << "one line each\n" << result.out;
+}
+
+TEST(Cli, InspectAPluginShowsItsFileVersionAndStages) {
+  const auto result = run_cli("inspect facet_normals", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(result.out.rfind("plugin facet_normals ", 0), 0u) << result.out;
+  for (const char* text : {"file:", "libfacet_normals",
+                           "sdk:", "toolchain:", "stages:", "  normals.cross", "  normals.pca"}) {
+    EXPECT_NE(result.out.find(text), std::string::npos) << text << "\n" << result.out;
+  }
+}
+
+TEST(Cli, InspectAnUnknownNameSuggestsStagesFamiliesAndPlugins) {
+  const auto family = run_cli("inspect normls", "env -u FACET_PLUGIN_PATH");
+  EXPECT_EQ(family.exit_code, 2) << family.out;
+  EXPECT_NE(family.out.find("error: no stage, stage family or plugin named 'normls'; did you mean "
+                            "'normals'"),
+            std::string::npos)
+      << family.out;
+  const auto plugin = run_cli("inspect facet_normal", "env -u FACET_PLUGIN_PATH");
+  EXPECT_NE(plugin.out.find("did you mean 'facet_normals'"), std::string::npos) << plugin.out;
+}
+
+TEST(Cli, InspectJsonGivesTheWholeSpecForTools) {
+  const auto result = run_cli("inspect --json filter.median", "env -u FACET_PLUGIN_PATH");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_EQ(result.out.front(), '{') << result.out;
+  for (const char* text :
+       {"\"name\": \"filter.median\"", "\"summary\": ", "\"doc\": ", "\"plugin\": {",
+        "\"name\": \"facet_filters\"", "\"version\": ", "\"file\": \"",
+        "\"concurrency\": \"clonable\"", "\"inputs\": [", "\"outputs\": [",
+        "\"type_key\": \"facet.DepthImage/1\"", "\"required\": true", "\"parameters\": [",
+        "\"name\": \"size\"", "\"type\": \"int\"", "\"default\": 3", "\"choices\": [",
+        "\"unit\": \"px\"", "\"default_origin\": "}) {
+    EXPECT_NE(result.out.find(text), std::string::npos) << text << "\n" << result.out;
+  }
+  // A family is an array of the same objects; so is --all.
+  const auto family = run_cli("inspect --json normals", "env -u FACET_PLUGIN_PATH");
+  ASSERT_EQ(family.exit_code, 0) << family.out;
+  EXPECT_EQ(family.out.front(), '[') << family.out;
+  EXPECT_NE(family.out.find("\"name\": \"normals.cross\""), std::string::npos);
+  EXPECT_NE(family.out.find("\"name\": \"normals.pca\""), std::string::npos);
+  EXPECT_EQ(run_cli("inspect --json --markdown filter.median").exit_code, 2);
 }
 
 TEST(Cli, InspectDocumentsEveryStageAndParameter) {

@@ -57,6 +57,13 @@ TEST(Run, TabletopOnBundledFramesWritesOneResultPerFrame) {
         out.path() / "objects" / entry.path().filename().replace_extension(".json");
     const std::string objects = read_file(object_file);
     EXPECT_NE(objects.find("\"superquadric\""), std::string::npos) << object_file;
+    // Schema 2: the bundled frames' intrinsics once, and the table every object stands on as an
+    // equation (every bundled frame has a table).
+    for (const char* key : {"\"schema_version\": 2,", "\"camera\": {", "\"fx\": 525,",
+                            "\"cy\": 239.5,", "\"width\": 640,", "\"height\": 480",
+                            "\"support_plane_equation\": {", "\"offset_m\": "}) {
+      EXPECT_NE(objects.find(key), std::string::npos) << key << " in " << object_file;
+    }
     EXPECT_NE(objects.find("\"id\": " + std::to_string(static_cast<int>(hi))), std::string::npos)
         << object_file << "\n"
         << objects.substr(0, 400);
@@ -170,6 +177,34 @@ TEST(Run, MissingInputFolderIsARuntimeFailureNamingIt) {
   EXPECT_EQ(result.exit_code, 1) << result.out;
   EXPECT_NE(result.out.find("no-such-dataset"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("source"), std::string::npos) << result.out;
+}
+
+// Input that another source stage reads: the error names that stage and how to run it, and the
+// graph it suggests exists.
+TEST(Run, APcdOrOniInputNamesTheSourceStageThatReadsIt) {
+  TempDir out("facet-run-other-source");
+  const auto cloud = out.path() / "scan.pcd";
+  const auto recording = out.path() / "take.oni";
+  std::ofstream(cloud) << "# .PCD v0.7\n";
+  std::ofstream(recording) << "not a recording";
+  const auto pcd = run_cli("run " + shell_quote(kTabletop.string()) +
+                           " --param input=" + shell_quote(cloud.string()) +
+                           " --param output=" + shell_quote((out.path() / "out").string()));
+  EXPECT_EQ(pcd.exit_code, 1) << pcd.out;
+  for (const char* text : {"node 'source' (io.frames)", "is a PCD point cloud", "io.pcd",
+                           "`facet list pcd`", "{stage: io.pcd, params: {path:"}) {
+    EXPECT_NE(pcd.out.find(text), std::string::npos) << text << "\n" << pcd.out;
+  }
+  EXPECT_EQ(pcd.out.find("not a folder"), std::string::npos) << pcd.out;
+  const auto oni = run_cli("run " + shell_quote(kTabletop.string()) +
+                           " --param input=" + shell_quote(recording.string()) +
+                           " --param output=" + shell_quote((out.path() / "out").string()));
+  EXPECT_EQ(oni.exit_code, 1) << oni.out;
+  for (const char* text : {"node 'source' (io.frames)", "is an OpenNI2 recording", "io.openni2",
+                           "facet run graphs/live.yaml --param uri="}) {
+    EXPECT_NE(oni.out.find(text), std::string::npos) << text << "\n" << oni.out;
+  }
+  EXPECT_NE(read_file(source_dir() / "graphs/live.yaml").find("uri:"), std::string::npos);
 }
 
 // A full disk: the stats and the trace went unwritten with exit 0, as the check came before the

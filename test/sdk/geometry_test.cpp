@@ -18,7 +18,7 @@ TEST(Geometry, ObjectListTravelsAsAPacket) {
   list.objects.push_back({});
   list.objects.back().grasp = facet::GraspPrototype::pincer;
   const auto packet = facet::Packet::make(list);
-  EXPECT_EQ(packet.type_key(), "facet.ObjectList/1");
+  EXPECT_EQ(packet.type_key(), "facet.ObjectList/2");
   ASSERT_NE(packet.get_if<facet::ObjectList>(), nullptr);
   EXPECT_EQ(facet::to_string(packet.get_if<facet::ObjectList>()->objects[0].grasp), "pincer");
 }

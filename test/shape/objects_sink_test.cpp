@@ -18,6 +18,7 @@ ObjectList sample_list() {
   list.frame.stem = "learn \"7\"";
   list.frame.index = 7;
   list.frame.timestamp_ns = 233333333;
+  list.camera = {.fx = 525.0, .fy = 526.5, .cx = 319.5, .cy = 239.5, .width = 640, .height = 480};
   ObjectModel object;
   object.id = 3;
   object.pixel_count = 4200;
@@ -28,6 +29,8 @@ ObjectList sample_list() {
   object.box.half_extents_m = {0.06, 0.035, 0.01};
   object.box.residual_m = 0.004;
   object.support_plane = 1;
+  object.support_normal = {0.0, -0.6, -0.8};  // the table, facing up and towards the camera
+  object.support_offset_m = 0.75;
   object.superquadric.valid = true;
   object.superquadric.size_m = {0.06, 0.035, 0.05};
   object.superquadric.epsilon1 = 0.1;
@@ -80,7 +83,8 @@ TEST(ObjectsSink, WritesEveryFieldDeterministically) {
   ASSERT_TRUE(std::filesystem::exists(file));
   const std::string text = read_text(file);
   EXPECT_TRUE(brackets_balance(text));
-  for (const char* expected : {"\"stem\": \"learn \\\"7\\\"\"",
+  for (const char* expected : {"{\n  \"schema_version\": 2,\n  \"frame\": {",
+                               "\"stem\": \"learn \\\"7\\\"\"",
                                "\"index\": 7",
                                "\"timestamp_ns\": 233333333",
                                "\"id\": 3",
@@ -91,7 +95,11 @@ TEST(ObjectsSink, WritesEveryFieldDeterministically) {
                                "\"half_extents_m\": [0.06, 0.035, 0.01]",
                                "\"quaternion_wxyz\": [1, 0, 0, 0]",
                                "\"rotation\": [",
-                               "\"support_plane\": 1",
+                               "\"support_plane\": 1,\n"
+                               "      \"support_plane_equation\": {\n"
+                               "        \"normal\": [0, -0.6, -0.8],\n"
+                               "        \"offset_m\": 0.75\n"
+                               "      },",
                                "\"size_m\": [0.06, 0.035, 0.05]",
                                "\"epsilon1\": 0.1",
                                "\"epsilon2\": 0.25",
@@ -99,11 +107,40 @@ TEST(ObjectsSink, WritesEveryFieldDeterministically) {
                                "\"grasp\": \"precision\"",
                                "\"id\": 4",
                                "\"bounds_m\": null",
+                               "\"support_plane\": 0,\n      \"support_plane_equation\": null",
                                "\"superquadric\": null",
                                "\"grasp\": \"none\""}) {
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
   }
   EXPECT_EQ(text, objects_to_json(sample_list()));
+}
+
+// The intrinsics come once per file, after the frame and before the objects, so that a grasp
+// planner can project the objects into the image without the dataset's intrinsics.yaml.
+TEST(ObjectsSink, WritesTheCameraIntrinsicsOncePerFile) {
+  const std::string text = objects_to_json(sample_list());
+  const std::string camera =
+      "  \"camera\": {\n"
+      "    \"fx\": 525,\n"
+      "    \"fy\": 526.5,\n"
+      "    \"cx\": 319.5,\n"
+      "    \"cy\": 239.5,\n"
+      "    \"width\": 640,\n"
+      "    \"height\": 480\n"
+      "  },\n"
+      "  \"objects\": [";
+  const std::size_t at = text.find(camera);
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_GT(at, text.find("\"timestamp_ns\""));
+  EXPECT_EQ(text.find("\"camera\"", at + camera.size()), std::string::npos) << "written twice:\n"
+                                                                            << text;
+}
+
+TEST(ObjectsSink, CameraIsNullWithoutIntrinsics) {
+  ObjectList list;  // made by a program that set no camera
+  const std::string text = objects_to_json(list);
+  EXPECT_NE(text.find("\"camera\": null,\n  \"objects\": ["), std::string::npos) << text;
+  EXPECT_TRUE(brackets_balance(text));
 }
 
 TEST(ObjectsSink, EmptyListAndMissingStem) {

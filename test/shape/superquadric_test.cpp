@@ -66,6 +66,26 @@ TEST(Superquadric, SeenFromAboveRecoversTheHeightThatThePcaBoxMisses) {
   EXPECT_EQ(sq.support_plane, 1);
 }
 
+// Both shape stages copy the support plane's equation into the object, in the plane's own sign
+// convention, and keep the frame's camera, so the object list alone suffices to a grasp planner.
+TEST(Superquadric, BothShapeStagesCarryTheSupportPlaneEquationAndTheCamera) {
+  const TabletopScene scene =
+      render_tabletop(TabletopShape::box, {0.06, 0.035, 0.05}, 60.0, 25.0, {0.0, 0.0, 0.9});
+  const Plane& table = scene.planes.planes.front();
+  const ObjectList list = run_superquadric(scene, true);
+  ASSERT_EQ(list.objects.size(), 1u);
+  EXPECT_EQ(list.camera, scene.objects.camera);
+  for (const ObjectModel& object : {list.objects.front(), run_pca_box(scene)}) {
+    ASSERT_EQ(object.support_plane, table.id);
+    EXPECT_EQ(object.support_normal, table.normal);
+    EXPECT_EQ(object.support_offset_m, table.offset_m);
+    EXPECT_NEAR(object.support_normal.norm(), 1.0, 1e-12);
+    // Towards the camera: the camera (the origin) is on the positive side, the object above.
+    EXPECT_GT(object.support_offset_m, 0.0);
+    EXPECT_GT(object.support_normal.dot(object.centroid_m) + object.support_offset_m, 0.0);
+  }
+}
+
 TEST(Superquadric, BoxSizesShapeAndCentreFromAnObliqueView) {
   const Eigen::Vector3d half_m(0.06, 0.035, 0.05);
   for (const double pitch_deg : {35.0, 50.0, 65.0}) {
@@ -117,6 +137,8 @@ TEST(Superquadric, WithoutPlanesStillFitsTheVisibleShape) {
   const ObjectModel sq = fit_one(scene, false);
   ASSERT_TRUE(sq.superquadric.valid);
   EXPECT_EQ(sq.support_plane, 0);
+  EXPECT_EQ(sq.support_normal, Eigen::Vector3d::Zero());
+  EXPECT_EQ(sq.support_offset_m, 0.0);
   EXPECT_LT(sq.superquadric.residual, 0.003);
   EXPECT_LT((sq.centroid_m - scene.object_pose.translation()).norm(), 0.05);
 }

@@ -120,4 +120,49 @@ TEST_F(TumDataset, MalformedListsNameFileAndLine) {
   expect_stage_error([&] { stamp.run(); }, {"bad.txt:1", "timestamp"});
 }
 
+// Point clouds and OpenNI2 recordings are read by other source stages: io.frames names the stage
+// and how to run it, for one file, a folder of them and a glob, rather than "not a folder".
+TEST(OtherSources, APcdFileFolderOrGlobNamesIoPcd) {
+  TempDir dir;
+  write_text(dir / "clouds" / "a.pcd", "# .PCD v0.7\n");
+  write_text(dir / "clouds" / "b.PCD", "# .PCD v0.7\n");
+  for (const std::string& path : {(dir / "clouds" / "a.pcd").string(), (dir / "clouds").string(),
+                                  (dir / "clouds" / "*").string()}) {
+    Runner runner({{"path", path}});
+    expect_stage_error(
+        [&] { runner.run(); },
+        {"'" + path + "'", "PCD point cloud", "io.frames does not read", "io.pcd", "facet_pcd",
+         "{stage: io.pcd, params: {path: \"" + path + "\"}}", "docs/data-formats.md"});
+  }
+}
+
+TEST(OtherSources, AnOniFileNamesIoOpenni2AndTheLiveGraph) {
+  TempDir dir;
+  write_text(dir / "take.oni", "not really a recording");
+  const std::string file = (dir / "take.oni").string();
+  Runner runner({{"path", file}});
+  expect_stage_error([&] { runner.run(); },
+                     {"'" + file + "' is an OpenNI2 recording", "io.openni2",
+                      "facet run graphs/live.yaml --param uri=" + file, "docs/cameras.md"});
+  Runner folder({{"path", dir.path().string()}});
+  expect_stage_error([&] { folder.run(); },
+                     {"holds OpenNI2 recordings", "io.openni2", "uri=<one of them>.oni"});
+}
+
+TEST(OtherSources, OtherFilesKeepTheDatasetErrors) {
+  TempDir dir;
+  write_text(dir / "notes.md", "nothing to read");
+  Runner file({{"path", (dir / "notes.md").string()}});
+  expect_stage_error([&] { file.run(); }, {"is not a folder", "TUM list"});
+  Runner folder({{"path", dir.path().string()}});
+  expect_stage_error([&] { folder.run(); }, {"has no depth/ folder"});
+  // A folder with PNG frames and a stray cloud beside them is still a dataset.
+  write_text(dir / "intrinsics.yaml", intrinsics_yaml(kWidth, kHeight));
+  write_png(dir / "depth" / "f0.png", depth_mm(kWidth, kHeight, 800));
+  write_text(dir / "scan.pcd", "# .PCD v0.7\n");
+  Runner dataset({{"path", dir.path().string()}});
+  dataset.run();
+  EXPECT_EQ(dataset.output<DepthImage>("depth").frame.stem, "f0");
+}
+
 }  // namespace

@@ -22,6 +22,7 @@ class JsonWriter {
   JsonWriter& value(double number);
   JsonWriter& value(std::int64_t number);
   JsonWriter& value(bool flag);
+  JsonWriter& null();
 
  private:
   void before_value();

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "facet/framework/json_writer.hpp"
 #include "facet/framework/registry.hpp"
 
 namespace facet {
@@ -14,5 +15,10 @@ std::string describe_param(const ParamSpec& param);
 
 void write_stage_text(std::ostream& out, const StageEntry& entry);
 void write_stage_markdown(std::ostream& out, const StageEntry& entry);
+
+// The spec as one JSON object, for tools (`facet inspect --json`): name, summary, doc, plugin,
+// concurrency, ports with their type keys, parameters with type, typed default, range, choices,
+// unit, doc and the default's origin. Absent attributes are null, so every key is always there.
+void write_stage_json(JsonWriter& json, const StageEntry& entry);
 
 }  // namespace facet

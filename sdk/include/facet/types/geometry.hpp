@@ -79,6 +79,11 @@ struct ObjectModel {
   Eigen::AlignedBox3d bounds_m;    // axis-aligned, camera frame
   OrientedBox box;                 // oriented, from PCA of the points
   std::int32_t support_plane = 0;  // Plane::id it stands on, 0 = none
+  // That plane's equation n·x + d = 0 as in Plane (unit normal towards the camera, d in metres),
+  // so that a consumer of the list (a grasp planner) needs no SupportPlanes beside it. Zero normal
+  // and offset when support_plane is 0.
+  Eigen::Vector3d support_normal = Eigen::Vector3d::Zero();
+  double support_offset_m = 0.0;
   Superquadric superquadric;
   GraspPrototype grasp = GraspPrototype::none;
 };
@@ -92,4 +97,5 @@ std::string_view to_string(GraspPrototype grasp) noexcept;
 }  // namespace facet
 
 FACET_TYPE_KEY(facet::SupportPlanes, "facet.SupportPlanes/1");
-FACET_TYPE_KEY(facet::ObjectList, "facet.ObjectList/1");
+// /2: ObjectModel gained support_normal and support_offset_m.
+FACET_TYPE_KEY(facet::ObjectList, "facet.ObjectList/2");
