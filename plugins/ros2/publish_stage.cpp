@@ -5,8 +5,10 @@
 #include <thread>
 
 #include "facet/error.hpp"
+#include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
 #include "ros2/depth_messages.hpp"
+#include "ros2/object_messages.hpp"
 #include "ros2/ros_names.hpp"
 
 namespace facet::ros2 {
@@ -34,12 +36,17 @@ std::string checked_dds_name(const std::string& ros_name, const std::string& par
 StageSpec PublishStage::spec() {
   StageSpec spec(
       "ros2.publish",
-      "Publishes depth (with its camera_info) and labels as ROS 2 topics over DDS (Cyclone "
-      "DDS; see docs/ros2.md).\n"
+      "Publishes depth (with its camera_info), labels and objects as ROS 2 topics over DDS "
+      "(Cyclone DDS; see docs/ros2.md).\n"
       "depth goes out as sensor_msgs/msg/Image (16UC1 in mm, or 32FC1 in m for CV_32FC1 "
       "depth) on 'topic', with a sensor_msgs/msg/CameraInfo of the frame's intrinsics (a "
       "rectified pinhole camera) on 'camera_info'; labels as sensor_msgs/msg/Image 16UC1 "
-      "(0 = background, 1..N objects) on 'labels_topic'. Each message's header has the "
+      "(0 = background, 1..N objects) on 'labels_topic'; objects as facet_msgs/msg/Objects on "
+      "'objects_topic' (id, pixel count, centroid, oriented box, superquadric, grasp, support "
+      "plane with its coefficients when planes is connected) and, for RViz, as "
+      "visualization_msgs/msg/MarkerArray on 'markers_topic' (a DELETEALL, then per object a "
+      "box and an ellipsoid of its superquadric's half sizes, in the overlay's colours). Each "
+      "message's header has the "
       "frame's timestamp (or the time of publishing, stamp 'now') and 'frame_id'. A topic is "
       "advertised when its input first has a value. wait_for_readers holds the first message "
       "of each topic until that many readers are matched (a reliable recording then loses no "
@@ -49,11 +56,18 @@ StageSpec PublishStage::spec() {
       "when the stamp came from a camera on this clock).");
   spec.optional_input<DepthImage>("depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m.")
       .optional_input<LabelImage>("labels", "Object ids, 0 = background, at most 65535.")
+      .optional_input<ObjectList>("objects", "Object models (shape.superquadric's output).")
+      .optional_input<SupportPlanes>("planes",
+                                     "Support planes, for the coefficients of each object's "
+                                     "support plane in the objects message.")
       .param("topic", "/camera/depth/image_rect_raw", "ROS 2 topic of the depth images.")
       .param("camera_info", "",
              "ROS 2 topic of the camera info; empty = 'camera_info' in the namespace of topic.",
              {.origin = "ROS camera convention"})
       .param("labels_topic", "/facet/labels", "ROS 2 topic of the label images.")
+      .param("objects_topic", "/facet/objects", "ROS 2 topic of the facet_msgs/msg/Objects.")
+      .param("markers_topic", "/facet/markers",
+             "ROS 2 topic of the visualization_msgs/msg/MarkerArray for RViz.")
       .param("domain", -1,
              "DDS domain (ROS_DOMAIN_ID); -1 = the environment's ROS_DOMAIN_ID, else 0.",
              {.min = -1, .max = 232})
@@ -86,6 +100,8 @@ PublishStage::PublishStage(const Params& params)
     : depth_topic_(params.get_string("topic")),
       camera_info_topic_(params.get_string("camera_info")),
       labels_topic_(params.get_string("labels_topic")),
+      objects_topic_(params.get_string("objects_topic")),
+      markers_topic_(params.get_string("markers_topic")),
       domain_param_(params.get_int("domain")),
       qos_{params.get_string("qos") == "reliable",
            static_cast<std::int32_t>(params.get_int("history_depth"))},
@@ -102,6 +118,8 @@ void PublishStage::open(const OpenContext& /*ctx*/) {
   checked_dds_name(depth_topic_, "topic");
   checked_dds_name(camera_info_topic_, "camera_info");
   checked_dds_name(labels_topic_, "labels_topic");
+  checked_dds_name(objects_topic_, "objects_topic");
+  checked_dds_name(markers_topic_, "markers_topic");
   std::uint32_t domain = 0;
   try {
     domain = resolve_domain(domain_param_, std::getenv("ROS_DOMAIN_ID"));
@@ -145,10 +163,19 @@ void PublishStage::pace() {
   next_publish_ = std::max(next_publish_, now) + period;
 }
 
+void PublishStage::write(const Publication& publication, const void* message) const {
+  const dds_return_t written = dds_write(publication.writer.get(), message);
+  if (written < 0) {
+    throw StageError("cannot publish on '" + publication.ros_name +
+                     "': " + dds_error_text(written));
+  }
+}
+
 void PublishStage::process(ProcessContext& ctx) {
   const bool has_depth = ctx.has_input("depth");
   const bool has_labels = ctx.has_input("labels");
-  if (!has_depth && !has_labels) return;
+  const bool has_objects = ctx.has_input("objects");
+  if (!has_depth && !has_labels && !has_objects) return;
   pace();
 
   if (has_depth) {
@@ -164,30 +191,40 @@ void PublishStage::process(ProcessContext& ctx) {
     const std::int64_t stamp_ns = stamp_now_ ? now_ns() : input.frame.timestamp_ns;
     // camera_info first: a subscriber that takes the image finds its info already there.
     const CameraInfoMessage info(input.camera, stamp_ns, frame_id_);
+    write(camera_info_, &info.message());
     const ImageMessage image(input.depth, stamp_ns, frame_id_);
-    for (const auto& [publication, message] :
-         {std::pair{&camera_info_, static_cast<const void*>(&info.message())},
-          std::pair{&depth_, static_cast<const void*>(&image.message())}}) {
-      const dds_return_t written = dds_write(publication->writer.get(), message);
-      if (written < 0) {
-        throw StageError("cannot publish on '" + publication->ros_name +
-                         "': " + dds_error_text(written));
-      }
-    }
+    write(depth_, &image.message());
   }
 
   if (has_labels) {
     const auto& input = ctx.input<LabelImage>("labels");
-    if (input.labels.empty()) return;
-    if (!labels_.writer) labels_ = advertise(sensor_msgs_msg_dds__Image__desc, labels_topic_);
-    const std::int64_t stamp_ns = stamp_now_ ? now_ns() : input.frame.timestamp_ns;
-    const ImageMessage image(labels_to_16u(input.labels), stamp_ns, frame_id_);
-    const dds_return_t written = dds_write(labels_.writer.get(), &image.message());
-    if (written < 0) {
-      throw StageError("cannot publish on '" + labels_topic_ + "': " + dds_error_text(written));
+    if (!input.labels.empty()) {
+      if (!labels_.writer) labels_ = advertise(sensor_msgs_msg_dds__Image__desc, labels_topic_);
+      const std::int64_t stamp_ns = stamp_now_ ? now_ns() : input.frame.timestamp_ns;
+      const ImageMessage image(labels_to_16u(input.labels), stamp_ns, frame_id_);
+      write(labels_, &image.message());
+      ctx.metric("stamp_age_ms", static_cast<double>(now_ns() - stamp_ns) * 1e-6);
     }
-    ctx.metric("stamp_age_ms", static_cast<double>(now_ns() - stamp_ns) * 1e-6);
   }
+
+  if (has_objects) publish_objects(ctx);
+}
+
+void PublishStage::publish_objects(ProcessContext& ctx) {
+  const auto& objects = ctx.input<ObjectList>("objects");
+  const SupportPlanes* planes =
+      ctx.has_input("planes") ? &ctx.input<SupportPlanes>("planes") : nullptr;
+  if (!objects_.writer) {
+    objects_ = advertise(facet_msgs_msg_dds__Objects__desc, objects_topic_);
+  }
+  if (!markers_.writer) {
+    markers_ = advertise(visualization_msgs_msg_dds__MarkerArray__desc, markers_topic_);
+  }
+  const std::int64_t stamp_ns = stamp_now_ ? now_ns() : objects.frame.timestamp_ns;
+  const ObjectsMessage message(objects, planes, stamp_ns, frame_id_);
+  write(objects_, &message.message());
+  const MarkerArrayMessage markers(objects, stamp_ns, frame_id_);
+  write(markers_, &markers.message());
 }
 
 void PublishStage::flush(const Publication& publication) const {
@@ -200,7 +237,7 @@ void PublishStage::close() {
   for (const Publication* publication : {&camera_info_, &depth_, &labels_})
     flush(*publication);
   // A writer before its topic: Cyclone refuses to delete a topic that is still in use.
-  for (Publication* publication : {&camera_info_, &depth_, &labels_}) {
+  for (Publication* publication : {&camera_info_, &depth_, &labels_, &objects_, &markers_}) {
     publication->writer.reset();
     publication->topic.reset();
   }

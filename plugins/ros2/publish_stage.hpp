@@ -1,5 +1,5 @@
 #pragma once
-// ros2.publish: depth (with its camera_info) and labels as ROS 2 topics over DDS.
+// ros2.publish: depth (with its camera_info), labels and objects as ROS 2 topics over DDS.
 
 #include <chrono>
 #include <cstdint>
@@ -32,11 +32,15 @@ class PublishStage final : public Stage {
   void wait_for_readers(const Publication& publication) const;
   void pace();
   void flush(const Publication& publication) const;
+  void write(const Publication& publication, const void* message) const;
+  void publish_objects(ProcessContext& ctx);
 
   // Parameters.
   std::string depth_topic_;
   std::string camera_info_topic_;
   std::string labels_topic_;
+  std::string objects_topic_;
+  std::string markers_topic_;
   std::int64_t domain_param_;
   QosProfile qos_;
   std::string frame_id_;
@@ -50,6 +54,8 @@ class PublishStage final : public Stage {
   Publication depth_;
   Publication camera_info_;
   Publication labels_;
+  Publication objects_;
+  Publication markers_;
 
   Clock::time_point next_publish_{};
 };

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -15,10 +16,13 @@
 
 #include "facet/error.hpp"
 #include "facet/testing/stage_runner.hpp"
+#include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
+#include "io/label_palette.hpp"
 #include "loopback_dds.hpp"
 #include "ros2/dds_entities.hpp"
 #include "ros2/depth_messages.hpp"
+#include "ros2/object_messages.hpp"
 #include "ros2/publish_stage.hpp"
 #include "ros2/ros_names.hpp"
 #include "ros2/subscribe_stage.hpp"
@@ -283,6 +287,136 @@ TEST_F(Ros2Stages, APublisherWithoutItsReadersStopsAfterItsTimeoutNamingTheTopic
               std::string::npos)
         << error.what();
   }
+}
+
+// Takes samples of one type from a topic, as RViz or a grasp planner would.
+template <typename Message>
+class RawReader {
+ public:
+  RawReader(std::uint32_t domain, const dds_topic_descriptor_t& descriptor,
+            const std::string& topic)
+      : descriptor_(descriptor),
+        participant_(create_participant(domain)),
+        topic_(create_topic(participant_, descriptor, dds_topic_name(topic), topic)),
+        reader_(create_reader(participant_, topic_, {true, 8}, topic)) {}
+
+  // Waits up to 5 s for one sample and copies what `use` needs from it.
+  template <typename Use>
+  bool take_one(Use&& use) {
+    const auto deadline = Clock::now() + std::chrono::seconds(5);
+    while (Clock::now() < deadline) {
+      void* samples[1] = {nullptr};
+      dds_sample_info_t info{};
+      const dds_return_t n = dds_take(reader_.get(), samples, &info, 1, 1);
+      if (n == 1) {
+        if (info.valid_data) use(*static_cast<const Message*>(samples[0]));
+        dds_return_loan(reader_.get(), samples, n);
+        if (info.valid_data) return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  }
+  std::uint32_t matched() const { return matched_count(reader_, false); }
+
+ private:
+  const dds_topic_descriptor_t& descriptor_;
+  DdsEntity participant_;
+  DdsEntity topic_;
+  DdsEntity reader_;
+};
+
+TEST_F(Ros2Stages, ObjectsGoOutAsFacetMessagesAndRvizMarkers) {
+  constexpr std::int64_t kDomain = 208;
+  const std::string objects_topic = test::unique_topic("objects");
+  const std::string markers_topic = test::unique_topic("markers");
+  RawReader<facet_msgs_msg_dds__Objects_> objects_reader(kDomain, facet_msgs_msg_dds__Objects__desc,
+                                                         objects_topic);
+  RawReader<visualization_msgs_msg_dds__MarkerArray_> markers_reader(
+      kDomain, visualization_msgs_msg_dds__MarkerArray__desc, markers_topic);
+
+  ObjectList objects;
+  objects.frame.timestamp_ns = 42'000'000'007;
+  ObjectModel cup;
+  cup.id = 1;
+  cup.pixel_count = 1234;
+  cup.centroid_m = {0.1, -0.05, 0.8};
+  cup.box.pose = Eigen::Translation3d(0.1, -0.05, 0.8) *
+                 Eigen::AngleAxisd(0.5 * M_PI, Eigen::Vector3d::UnitZ());
+  cup.box.half_extents_m = {0.04, 0.04, 0.06};
+  cup.superquadric.valid = true;
+  cup.superquadric.pose = cup.box.pose;
+  cup.superquadric.size_m = {0.035, 0.035, 0.055};
+  cup.superquadric.epsilon1 = 0.3;
+  cup.superquadric.epsilon2 = 1.0;
+  cup.support_plane = 2;
+  cup.grasp = GraspPrototype::power;
+  ObjectModel flat = cup;  // no superquadric, a flat box
+  flat.id = 2;
+  flat.superquadric.valid = false;
+  flat.box.half_extents_m = {0.1, 0.1, 0.0};
+  flat.grasp = GraspPrototype::pincer;
+  objects.objects = {cup, flat};
+  SupportPlanes planes;
+  Plane table;
+  table.id = 2;
+  table.normal = {0.0, -0.8, -0.6};
+  table.offset_m = 0.7;
+  planes.planes = {table};
+
+  testing::StageRunner<PublishStage> publisher(Overrides{{"objects_topic", objects_topic},
+                                                         {"markers_topic", markers_topic},
+                                                         {"domain", kDomain},
+                                                         {"frame_id", std::string("optical")},
+                                                         {"wait_for_readers", std::int64_t{1}},
+                                                         {"wait_timeout_s", 5.0}});
+  publisher.set_input("objects", Packet::make(objects));
+  publisher.set_input("planes", Packet::make(planes));
+  publisher.run();
+
+  ASSERT_TRUE(objects_reader.take_one([&](const facet_msgs_msg_dds__Objects_& message) {
+    EXPECT_EQ(message.header.stamp.sec, 42);
+    EXPECT_EQ(message.header.stamp.nanosec, 7u);
+    EXPECT_STREQ(message.header.frame_id, "optical");
+    ASSERT_EQ(message.objects._length, 2u);
+    const auto& first = message.objects._buffer[0];
+    EXPECT_EQ(first.id, 1);
+    EXPECT_EQ(first.pixel_count, 1234);
+    EXPECT_EQ(first.centroid.z, 0.8);
+    EXPECT_NEAR(first.box_pose.orientation.z, std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(first.box_pose.orientation.w, std::sqrt(0.5), 1e-12);
+    EXPECT_EQ(first.box_half_extents.z, 0.06);
+    EXPECT_TRUE(first.superquadric_valid);
+    EXPECT_EQ(first.superquadric_size.x, 0.035);
+    EXPECT_EQ(first.superquadric_epsilon1, 0.3);
+    EXPECT_STREQ(first.grasp, "power");
+    EXPECT_EQ(first.support_plane, 2);
+    EXPECT_EQ(first.support_normal.y, -0.8);
+    EXPECT_EQ(first.support_offset, 0.7);
+    EXPECT_FALSE(message.objects._buffer[1].superquadric_valid);
+    EXPECT_STREQ(message.objects._buffer[1].grasp, "pincer");
+  }));
+  ASSERT_TRUE(markers_reader.take_one([&](const visualization_msgs_msg_dds__MarkerArray_& message) {
+    // DELETEALL, the cup's box and ellipsoid, the flat object's box.
+    ASSERT_EQ(message.markers._length, 4u);
+    const auto* markers = message.markers._buffer;
+    EXPECT_EQ(markers[0].action, MarkerArrayMessage::kDeleteAll);
+    EXPECT_EQ(markers[1].type, MarkerArrayMessage::kCube);
+    EXPECT_STREQ(markers[1].ns, "facet_boxes");
+    EXPECT_EQ(markers[1].id, 1);
+    EXPECT_EQ(markers[1].scale.z, 0.12);
+    EXPECT_STREQ(markers[1].header.frame_id, "optical");
+    const io::Rgb colour = io::label_colour(1);
+    EXPECT_FLOAT_EQ(markers[1].color.r, static_cast<float>(colour.r) / 255.0f);
+    EXPECT_FLOAT_EQ(markers[1].color.b, static_cast<float>(colour.b) / 255.0f);
+    EXPECT_EQ(markers[2].type, MarkerArrayMessage::kSphere);
+    EXPECT_STREQ(markers[2].ns, "facet_superquadrics");
+    EXPECT_EQ(markers[2].scale.x, 0.07);
+    EXPECT_EQ(markers[3].id, 2);
+    EXPECT_EQ(markers[3].type, MarkerArrayMessage::kCube);
+    EXPECT_EQ(markers[3].scale.z, 0.001) << "a flat box is drawn 1 mm thick";
+  }));
+  publisher.close();
 }
 
 }  // namespace
