@@ -295,8 +295,7 @@ class RawReader {
  public:
   RawReader(std::uint32_t domain, const dds_topic_descriptor_t& descriptor,
             const std::string& topic)
-      : descriptor_(descriptor),
-        participant_(create_participant(domain)),
+      : participant_(create_participant(domain)),
         topic_(create_topic(participant_, descriptor, dds_topic_name(topic), topic)),
         reader_(create_reader(participant_, topic_, {true, 8}, topic)) {}
 
@@ -317,10 +316,8 @@ class RawReader {
     }
     return false;
   }
-  std::uint32_t matched() const { return matched_count(reader_, false); }
 
  private:
-  const dds_topic_descriptor_t& descriptor_;
   DdsEntity participant_;
   DdsEntity topic_;
   DdsEntity reader_;
