@@ -25,6 +25,7 @@ packages=(
   libeigen3-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev libpcl-dev
   libdeflate-dev
   libopenni2-dev libopencv-highgui-dev libxcb1-dev xvfb
+  cyclonedds-dev cyclonedds-tools
   chromium
   pybind11-dev python3-dev python3-numpy python3-pytest python3-opencv python3-matplotlib
 )
