@@ -83,8 +83,9 @@ TEST(ComponentLabeler, WritesIntoAViewOnly) {
   EXPECT_EQ(buffer.at<std::int32_t>(3, 4), -1);
 }
 
-// Every byte value (the 8-pixel bit trick must pick exactly the value asked for) and both
-// connectivities: the same partition of the pixels as cv::connectedComponents.
+// The values 0, 1, 2 and 255 among pixels of the others (the 8-pixel bit test must pick exactly
+// the value asked for, top bit included), and both connectivities: the same partition of the
+// pixels as cv::connectedComponents.
 TEST(ComponentLabeler, SamePartitionAsOpenCvOnRandomImages) {
   cv::RNG rng(5);
   ComponentLabeler labeler;
