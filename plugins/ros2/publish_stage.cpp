@@ -1,7 +1,6 @@
 #include "ros2/publish_stage.hpp"
 
-#include <cstdlib>
-#include <stdexcept>
+#include <chrono>
 #include <thread>
 
 #include "facet/error.hpp"
@@ -10,26 +9,13 @@
 #include "ros2/depth_messages.hpp"
 #include "ros2/object_messages.hpp"
 #include "ros2/ros_names.hpp"
+#include "ros2/stage_settings.hpp"
 
 namespace facet::ros2 {
 namespace {
 
 // How often the matched readers are looked at while waiting for them.
 constexpr auto kMatchPoll = std::chrono::milliseconds(10);
-
-std::int64_t now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
-}
-
-std::string checked_dds_name(const std::string& ros_name, const std::string& param) {
-  try {
-    return dds_topic_name(ros_name);
-  } catch (const std::invalid_argument& error) {
-    throw StageError("param '" + param + "': " + error.what());
-  }
-}
 
 }  // namespace
 
@@ -120,13 +106,7 @@ void PublishStage::open(const OpenContext& /*ctx*/) {
   checked_dds_name(labels_topic_, "labels_topic");
   checked_dds_name(objects_topic_, "objects_topic");
   checked_dds_name(markers_topic_, "markers_topic");
-  std::uint32_t domain = 0;
-  try {
-    domain = resolve_domain(domain_param_, std::getenv("ROS_DOMAIN_ID"));
-  } catch (const std::invalid_argument& error) {
-    throw StageError("param 'domain' is -1, but " + std::string(error.what()));
-  }
-  participant_ = create_participant(domain);
+  participant_ = create_participant(checked_domain(domain_param_));
 }
 
 PublishStage::Publication PublishStage::advertise(const dds_topic_descriptor_t& descriptor,
@@ -188,7 +168,7 @@ void PublishStage::process(ProcessContext& ctx) {
     if (!camera_info_.writer) {
       camera_info_ = advertise(sensor_msgs_msg_dds__CameraInfo__desc, camera_info_topic_);
     }
-    const std::int64_t stamp_ns = stamp_now_ ? now_ns() : input.frame.timestamp_ns;
+    const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : input.frame.timestamp_ns;
     // camera_info first: a subscriber that takes the image finds its info already there.
     const CameraInfoMessage info(input.camera, stamp_ns, frame_id_);
     write(camera_info_, &info.message());
@@ -200,10 +180,10 @@ void PublishStage::process(ProcessContext& ctx) {
     const auto& input = ctx.input<LabelImage>("labels");
     if (!input.labels.empty()) {
       if (!labels_.writer) labels_ = advertise(sensor_msgs_msg_dds__Image__desc, labels_topic_);
-      const std::int64_t stamp_ns = stamp_now_ ? now_ns() : input.frame.timestamp_ns;
+      const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : input.frame.timestamp_ns;
       const ImageMessage image(labels_to_16u(input.labels), stamp_ns, frame_id_);
       write(labels_, &image.message());
-      ctx.metric("stamp_age_ms", static_cast<double>(now_ns() - stamp_ns) * 1e-6);
+      ctx.metric("stamp_age_ms", static_cast<double>(system_now_ns() - stamp_ns) * 1e-6);
     }
   }
 
@@ -220,7 +200,7 @@ void PublishStage::publish_objects(ProcessContext& ctx) {
   if (!markers_.writer) {
     markers_ = advertise(visualization_msgs_msg_dds__MarkerArray__desc, markers_topic_);
   }
-  const std::int64_t stamp_ns = stamp_now_ ? now_ns() : objects.frame.timestamp_ns;
+  const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : objects.frame.timestamp_ns;
   const ObjectsMessage message(objects, planes, stamp_ns, frame_id_);
   write(objects_, &message.message());
   const MarkerArrayMessage markers(objects, stamp_ns, frame_id_);

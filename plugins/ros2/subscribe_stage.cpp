@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <cstdlib>
-#include <stdexcept>
 
 #include "facet/error.hpp"
 #include "facet/types/images.hpp"
 #include "ros2/depth_messages.hpp"
 #include "ros2/ros_names.hpp"
+#include "ros2/stage_settings.hpp"
 
 namespace facet::ros2 {
 namespace {
@@ -25,12 +24,6 @@ std::string frame_stem(std::int64_t index) {
   char stem[32];
   std::snprintf(stem, sizeof(stem), "%06lld", static_cast<long long>(index));
   return stem;
-}
-
-std::int64_t now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
-      .count();
 }
 
 // Takes every sample `reader` holds, in arrival order, handing each valid one to `use`. Returns
@@ -121,25 +114,9 @@ SubscribeStage::SubscribeStage(const Params& params)
 }
 
 void SubscribeStage::open(const OpenContext& /*ctx*/) {
-  std::string image_dds;
-  std::string info_dds;
-  try {
-    image_dds = dds_topic_name(topic_);
-  } catch (const std::invalid_argument& error) {
-    throw StageError("param 'topic': " + std::string(error.what()));
-  }
-  try {
-    info_dds = dds_topic_name(camera_info_topic_);
-  } catch (const std::invalid_argument& error) {
-    throw StageError("param 'camera_info': " + std::string(error.what()));
-  }
-  std::uint32_t domain = 0;
-  try {
-    domain = resolve_domain(domain_param_, std::getenv("ROS_DOMAIN_ID"));
-  } catch (const std::invalid_argument& error) {
-    throw StageError("param 'domain' is -1, but " + std::string(error.what()));
-  }
-  participant_ = create_participant(domain);
+  const std::string image_dds = checked_dds_name(topic_, "topic");
+  const std::string info_dds = checked_dds_name(camera_info_topic_, "camera_info");
+  participant_ = create_participant(checked_domain(domain_param_));
   image_topic_ = create_topic(participant_, sensor_msgs_msg_dds__Image__desc, image_dds, topic_);
   info_topic_ = create_topic(participant_, sensor_msgs_msg_dds__CameraInfo__desc, info_dds,
                              camera_info_topic_);
@@ -156,7 +133,7 @@ void SubscribeStage::open(const OpenContext& /*ctx*/) {
 }
 
 bool SubscribeStage::take_available() {
-  const std::int64_t received_ns = now_ns();
+  const std::int64_t received_ns = system_now_ns();
   // camera_infos first, so that an image taken in the same round finds its own.
   const std::size_t infos =
       take_all<sensor_msgs_msg_dds__CameraInfo_>(info_reader_, [&](const auto& message) {
