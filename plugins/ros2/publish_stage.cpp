@@ -33,7 +33,9 @@ StageSpec PublishStage::spec() {
       "visualization_msgs/msg/MarkerArray on 'markers_topic' (a DELETEALL, then per object a "
       "box and an ellipsoid of its superquadric's half sizes, in the overlay's colours). Each "
       "message's header has the "
-      "frame's timestamp (or the time of publishing, stamp 'now') and 'frame_id'. A topic is "
+      "frame's timestamp (or the time of publishing, stamp 'now') and the frame's camera "
+      "frame id (the header frame_id ros2.subscribe received), or 'frame_id' for frames that "
+      "carry none (files, OpenNI2). A topic is "
       "advertised when its input first has a value. wait_for_readers holds the first message "
       "of each topic until that many readers are matched (a reliable recording then loses no "
       "frame); rate_hz paces the messages like a camera. At the end a reliable publisher waits "
@@ -64,7 +66,9 @@ StageSpec PublishStage::spec() {
       .param("history_depth", 10, "Samples each DDS writer keeps (keep last N).",
              {.min = 1, .max = 1000})
       .param("frame_id", "camera_depth_optical_frame",
-             "frame_id of every header (facet frames do not carry the camera's frame id).")
+             "Header frame_id for frames without a camera frame id of their own (read from "
+             "files or OpenNI2); frames from ros2.subscribe keep the one they came with.",
+             {.origin = "ROS REP 103/105: the optical frame of a depth camera"})
       .param("stamp", "frame",
              "frame: the frame's timestamp; now: the system clock when publishing (a recording "
              "played as a live camera).",
@@ -170,9 +174,9 @@ void PublishStage::process(ProcessContext& ctx) {
     }
     const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : input.frame.timestamp_ns;
     // camera_info first: a subscriber that takes the image finds its info already there.
-    const CameraInfoMessage info(input.camera, stamp_ns, frame_id_);
+    const CameraInfoMessage info(input.camera, stamp_ns, header_frame_id(input.frame));
     write(camera_info_, &info.message());
-    const ImageMessage image(input.depth, stamp_ns, frame_id_);
+    const ImageMessage image(input.depth, stamp_ns, header_frame_id(input.frame));
     write(depth_, &image.message());
   }
 
@@ -181,7 +185,7 @@ void PublishStage::process(ProcessContext& ctx) {
     if (!input.labels.empty()) {
       if (!labels_.writer) labels_ = advertise(sensor_msgs_msg_dds__Image__desc, labels_topic_);
       const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : input.frame.timestamp_ns;
-      const ImageMessage image(labels_to_16u(input.labels), stamp_ns, frame_id_);
+      const ImageMessage image(labels_to_16u(input.labels), stamp_ns, header_frame_id(input.frame));
       write(labels_, &image.message());
       ctx.metric("stamp_age_ms", static_cast<double>(system_now_ns() - stamp_ns) * 1e-6);
     }
@@ -201,10 +205,14 @@ void PublishStage::publish_objects(ProcessContext& ctx) {
     markers_ = advertise(visualization_msgs_msg_dds__MarkerArray__desc, markers_topic_);
   }
   const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : objects.frame.timestamp_ns;
-  const ObjectsMessage message(objects, planes, stamp_ns, frame_id_);
+  const ObjectsMessage message(objects, planes, stamp_ns, header_frame_id(objects.frame));
   write(objects_, &message.message());
-  const MarkerArrayMessage markers(objects, stamp_ns, frame_id_);
+  const MarkerArrayMessage markers(objects, stamp_ns, header_frame_id(objects.frame));
   write(markers_, &markers.message());
+}
+
+const std::string& PublishStage::header_frame_id(const FrameInfo& frame) const {
+  return frame.camera_frame_id.empty() ? frame_id_ : frame.camera_frame_id;
 }
 
 void PublishStage::flush(const Publication& publication) const {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "facet/stage.hpp"
+#include "facet/types/frame.hpp"
 #include "ros2/dds_entities.hpp"
 
 namespace facet::ros2 {
@@ -32,6 +33,8 @@ class PublishStage final : public Stage {
   void wait_for_readers(const Publication& publication) const;
   void pace();
   void flush(const Publication& publication) const;
+  // The frame's own camera frame id, else the frame_id param.
+  const std::string& header_frame_id(const FrameInfo& frame) const;
   void write(const Publication& publication, const void* message) const;
   void publish_objects(ProcessContext& ctx);
 
@@ -43,7 +46,7 @@ class PublishStage final : public Stage {
   std::string markers_topic_;
   std::int64_t domain_param_;
   QosProfile qos_;
-  std::string frame_id_;
+  std::string frame_id_;  // for frames that carry no camera frame id
   bool stamp_now_;
   double rate_hz_;
   std::int64_t wait_for_readers_;

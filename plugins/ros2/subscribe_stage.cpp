@@ -70,9 +70,10 @@ StageSpec SubscribeStage::spec() {
       "stamp, on this computer's clock), dropped_frames. A wrong encoding, a data size that is "
       "not step x height, a K without focal lengths or a camera_info of another size stop the "
       "run with an error naming the topic.");
-  spec.output<DepthImage>("depth",
-                          "Depth, CV_16UC1 in mm (or CV_32FC1 in m when output_unit is "
-                          "as_received), with index, stamp, stem and intrinsics.")
+  spec.output<DepthImage>(
+          "depth",
+          "Depth, CV_16UC1 in mm (or CV_32FC1 in m when output_unit is "
+          "as_received), with index, stamp, stem, intrinsics and the header's frame_id.")
       .param("topic", "/camera/depth/image_rect_raw", "ROS 2 topic of the depth images.")
       .param("camera_info", "",
              "ROS 2 topic of the camera info; empty = 'camera_info' in the namespace of topic.",
@@ -195,6 +196,7 @@ void SubscribeStage::process(ProcessContext& ctx) {
   depth.frame.index = delivered_;
   depth.frame.timestamp_ns = frame->image.stamp_ns;
   depth.frame.stem = frame_stem(delivered_);
+  depth.frame.camera_frame_id = std::move(frame->image.frame_id);
   ++delivered_;
   ctx.metric("latency_ms",
              static_cast<double>(frame->image.received_ns - frame->image.stamp_ns) * 1e-6);

@@ -84,7 +84,7 @@ std::thread publish_frames(const std::string& topic, std::int64_t domain,
   });
 }
 
-TEST_F(Ros2Stages, ReliableDeliversEveryFrameInOrderWithStampAndIntrinsics) {
+TEST_F(Ros2Stages, ReliableDeliversEveryFrameInOrderWithStampIntrinsicsAndFrameId) {
   const std::string topic = test::unique_topic("reliable");
   constexpr std::int64_t kDomain = 202;
   testing::StageRunner<SubscribeStage> subscriber(Overrides{{"topic", topic},
@@ -94,6 +94,12 @@ TEST_F(Ros2Stages, ReliableDeliversEveryFrameInOrderWithStampAndIntrinsics) {
   std::vector<DepthImage> frames;
   for (int i = 0; i < 4; ++i)
     frames.push_back(make_depth(i, pixels_mm(i)));
+  // Frames that came with a camera frame id keep it; the others get the param's default.
+  frames[0].frame.camera_frame_id = "arm_camera_optical";
+  frames[1].frame.camera_frame_id = "head_camera_optical";
+  const std::vector<std::string> expected_frame_ids = {"arm_camera_optical", "head_camera_optical",
+                                                       "camera_depth_optical_frame",
+                                                       "camera_depth_optical_frame"};
   std::string publish_error;
   std::thread publisher = publish_frames(topic, kDomain, frames, &publish_error);
 
@@ -105,6 +111,7 @@ TEST_F(Ros2Stages, ReliableDeliversEveryFrameInOrderWithStampAndIntrinsics) {
     EXPECT_EQ(depth.frame.stem, "00000" + std::to_string(i));
     EXPECT_EQ(depth.frame.timestamp_ns, frames[static_cast<std::size_t>(i)].frame.timestamp_ns);
     EXPECT_EQ(depth.camera, frames[static_cast<std::size_t>(i)].camera);
+    EXPECT_EQ(depth.frame.camera_frame_id, expected_frame_ids[static_cast<std::size_t>(i)]);
     ASSERT_EQ(depth.depth.type(), CV_16UC1);
     EXPECT_EQ(cv::norm(depth.depth, pixels_mm(i), cv::NORM_INF), 0.0);
     EXPECT_EQ(metric(subscriber.metrics(), "dropped_frames"), 0.0);
