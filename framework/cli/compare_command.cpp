@@ -38,6 +38,7 @@ struct CompareArgs {
   std::string variant;              // the variant a sweep starts from
   double plateau_within = 0.01;
   std::vector<std::string> params;
+  std::vector<std::string> replaces;
   std::vector<std::string> sets;
   std::int64_t frames = -1;
   std::int64_t warmup = 2;
@@ -111,6 +112,7 @@ int compare(const CompareArgs& args) {
   LoadOptions base_options;
   std::vector<std::pair<std::string, std::string>> params;
   if (!parse_assignments(args.params, "--param", params) ||
+      !parse_assignments(args.replaces, "--replace", base_options.replaces) ||
       !parse_assignments(args.sets, "--set", base_options.sets)) {
     return kUsage;
   }
@@ -330,6 +332,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   command->add_option("--param,-p", args->params,
                       "Override a graph parameter for every variant: name=value (repeatable; "
                       "'output' is set per variant)");
+  command->add_option("--replace", args->replaces,
+                      "Give a node another stage in every variant: node=stage (repeatable, "
+                      "applied after the variant, before --set)");
   command->add_option("--set,-s", args->sets,
                       "Override a node parameter for every variant: node.param=value "
                       "(repeatable, applied after the variant)");

@@ -34,6 +34,12 @@ void add_graph_options(CLI::App& command, GraphOptions& options) {
                   "Override a graph parameter: name=value (repeatable)")
       ->allow_extra_args(false);
   command
+      .add_option("--replace", options.replaces,
+                  "Give a node another stage: node=stage, e.g. source=io.pcd; the node keeps its "
+                  "inputs, its params start from the new stage's defaults (repeatable, applied "
+                  "after --variant, before --set)")
+      ->allow_extra_args(false);
+  command
       .add_option("--set,-s", options.sets,
                   "Override a node parameter: node.param=value (repeatable, applied last)")
       ->allow_extra_args(false);
@@ -84,6 +90,13 @@ std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
       options.params[kv->first] = kv->second;
     } else {
       diagnostics.error(command_line, "--param expects name=value, got '" + text + "'");
+    }
+  }
+  for (const auto& text : graph_options.replaces) {
+    if (const auto kv = split_assignment(text)) {
+      options.replaces.push_back(*kv);
+    } else {
+      diagnostics.error(command_line, "--replace expects node=stage, got '" + text + "'");
     }
   }
   for (const auto& text : graph_options.sets) {

@@ -20,8 +20,9 @@ struct PluginOptions {
 
 struct GraphOptions {
   std::filesystem::path graph_file;
-  std::vector<std::string> params;  // name=value
-  std::vector<std::string> sets;    // node.param=value
+  std::vector<std::string> params;    // name=value
+  std::vector<std::string> replaces;  // node=stage
+  std::vector<std::string> sets;      // node.param=value
   std::string variant;
 };
 

@@ -55,12 +55,33 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 }  // namespace
 
 void Diagnostics::error(SourceLocation where, std::string message) {
+  const std::string file = where.file;
   items_.push_back({Severity::error, std::move(where), std::move(message)});
   ++error_count_;
+  add_context_notes(file);
 }
 
 void Diagnostics::warning(SourceLocation where, std::string message) {
+  const std::string file = where.file;
   items_.push_back({Severity::warning, std::move(where), std::move(message)});
+  add_context_notes(file);
+}
+
+void Diagnostics::add_file_context(std::string file, SourceLocation where, std::string message) {
+  contexts_.push_back({std::move(file), {Severity::note, std::move(where), std::move(message)}});
+}
+
+void Diagnostics::add_context_notes(const std::string& file) {
+  // Up the chain of contexts; each at most once, so that a cycle cannot loop.
+  std::string current = file;
+  for (std::size_t step = 0; step < contexts_.size(); ++step) {
+    const auto it =
+        std::find_if(contexts_.begin(), contexts_.end(),
+                     [&](const FileContext& context) { return context.file == current; });
+    if (it == contexts_.end()) return;
+    items_.push_back(it->note);
+    current = it->note.where.file;
+  }
 }
 
 void Diagnostics::note(SourceLocation where, std::string message) {

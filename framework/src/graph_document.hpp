@@ -32,6 +32,7 @@ struct RawNode {
   std::vector<RawInput> inputs;
   std::optional<SourceLocation> inputs_where;
   std::vector<ParamSetting> params;
+  std::optional<RawText> when;  // `when: PARAM`: the node exists only while that param is set
   std::string replaced_stage;
   std::string replaced_by_variant;
 };
@@ -62,6 +63,14 @@ struct RawVariant {
 };
 
 struct RawGraph {
+  // Composition: the base graph file this one extends, and its edits of the base's nodes.
+  std::optional<RawText> extends;
+  std::vector<RawText> removes;
+  std::vector<RawText> removed_variants;  // `remove_variants:`, names of the base's variants
+  std::vector<RawReplace> replaces;
+  std::vector<RawSet> sets;
+  std::vector<LeftOutNode> removed;  // what `remove:` took out, for the validator's errors
+
   std::optional<std::string> name;
   std::string description;
   std::vector<ParamSetting> params;  // graph params and their defaults, in file order
@@ -70,6 +79,8 @@ struct RawGraph {
   std::vector<RawVariant> variants;
   std::vector<RawInput> graph_inputs;   // `inputs:` name: node.port
   std::vector<RawInput> graph_outputs;  // `outputs:` name: node.port
+  bool has_graph_inputs = false;        // the file has an `inputs:` key (perhaps empty)
+  bool has_graph_outputs = false;
 
   RawNode* find_node(const std::string& id);
   const RawVariant* find_variant(const std::string& name) const;

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "facet/framework/graph_spec.hpp"
+#include "graph_compose.hpp"
 #include "graph_document.hpp"
 #include "graph_substitution.hpp"
 #include "graph_variants.hpp"
@@ -103,6 +104,30 @@ void select_variant(RawGraph& raw, const std::string& variant, const std::string
   }
 }
 
+// `--replace node=stage`: the node gets the stage, with its inputs and the stage's defaults (the
+// old params belong to the old stage); `--set` then gives the params.
+void apply_command_line_replaces(RawGraph& raw, const LoadOptions& options,
+                                 Diagnostics& diagnostics) {
+  for (const auto& [id, stage] : options.replaces) {
+    const std::string option = "--replace " + id + "=" + stage + ": ";
+    if (!detail::is_identifier(id) || stage.empty()) {
+      diagnostics.error(command_line(), option + "expected 'node=stage'");
+      continue;
+    }
+    RawNode* node = raw.find_node(id);
+    if (node == nullptr) {
+      diagnostics.error(command_line(), option + "unknown node '" + id + "'" +
+                                            detail::suggestion_suffix(id, raw.node_ids(), ""));
+      continue;
+    }
+    detail::RawReplace replace;
+    replace.node = id;
+    replace.where = command_line();
+    replace.stage = detail::RawText{stage, command_line()};
+    detail::apply_replace(*node, replace, "");
+  }
+}
+
 void apply_command_line_sets(RawGraph& raw, const LoadOptions& options, Diagnostics& diagnostics) {
   for (const auto& [key, value] : options.sets) {
     const std::string option = "--set " + key + "=" + value + ": ";
@@ -167,6 +192,29 @@ NodeSpec resolve_node(const RawNode& raw, const ParamSubstitution& substitution,
   return node;
 }
 
+// `when: PARAM` keeps a node only while the graph parameter PARAM is set (not empty), so that a
+// graph can write files, say, only when given an output folder. True when the node stays.
+bool node_is_wanted(const RawNode& node, const std::map<std::string, std::string>& params,
+                    std::vector<LeftOutNode>& left_out, Diagnostics& diagnostics) {
+  if (!node.when) return true;
+  const auto& [name, where] = *node.when;
+  const auto param = params.find(name);
+  if (param == params.end()) {
+    std::vector<std::string> declared;
+    for (const auto& [declared_name, value] : params)
+      declared.push_back(declared_name);
+    diagnostics.error(where, "'when' of node '" + node.id + "' names no graph parameter: '" + name +
+                                 "'" +
+                                 detail::suggestion_suffix(name, declared, "the graph declares"));
+    return true;  // validated like any node, so that its other problems are reported too
+  }
+  if (!param->second.empty()) return true;
+  left_out.push_back(
+      {node.id, "graph parameter '" + name + "' is empty", where,
+       "node '" + node.id + "' exists only when '" + name + "' is set (--param " + name + "=...)"});
+  return false;
+}
+
 // `inputs:` / `outputs:` entries, with ${...} substituted and the reference split.
 std::vector<GraphPort> resolve_graph_ports(const std::vector<detail::RawInput>& raw,
                                            const std::string& what,
@@ -187,6 +235,74 @@ std::vector<GraphPort> resolve_graph_ports(const std::vector<detail::RawInput>& 
   return ports;
 }
 
+// The YAML text of a graph file checked and read into its structure; nothing when it is not a
+// graph at all (reported).
+std::optional<RawGraph> read_document(const std::string& yaml, const std::string& file,
+                                      Diagnostics& diagnostics) {
+  YAML::Node root;
+  try {
+    if (!detail::refuse_aliases(yaml, file, diagnostics)) return std::nullopt;
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& error) {
+    const SourceLocation where =
+        error.mark.is_null() ? SourceLocation{file, 0, 0}
+                             : SourceLocation{file, error.mark.line + 1, error.mark.column + 1};
+    diagnostics.error(where, error.msg);
+    return std::nullopt;
+  }
+  if (root.IsNull()) {
+    // Only blank lines and comments: empty; anything else is text yaml-cpp read as nothing.
+    bool blank = true;
+    std::istringstream lines(yaml);
+    for (std::string line; blank && std::getline(lines, line);) {
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      blank = first == std::string::npos || line[first] == '#';
+    }
+    diagnostics.error({file, 0, 0}, blank ? "the graph file is empty"
+                                          : "the graph file holds no YAML value: a graph file is "
+                                            "a map (facet, name, params, nodes, ...)");
+    return std::nullopt;
+  }
+  if (!root.IsMap()) {
+    diagnostics.error(detail::location_of(root, file),
+                      "a graph file must be a map (facet, name, params, nodes, ...), got " +
+                          std::string(detail::kind_name(root)));
+    return std::nullopt;
+  }
+  detail::report_duplicate_keys(root, file, diagnostics);
+  return detail::parse_graph_document(root, file, diagnostics);
+}
+
+// The whole text of a file, or why it cannot be read.
+struct FileText {
+  std::string text;
+  std::string error;
+};
+
+FileText read_text_file(const fs::path& file) {
+  std::error_code error;
+  const auto status = fs::status(file, error);
+  if (!fs::exists(status)) return {"", "no such file"};
+  if (fs::is_directory(status)) return {"", "it is a directory"};
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {"", std::generic_category().message(errno)};
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return {"", "read error"};
+  return {text.str(), ""};
+}
+
+std::optional<RawGraph> read_base_file(const fs::path& file, const SourceLocation& requested_at,
+                                       Diagnostics& diagnostics) {
+  const FileText content = read_text_file(file);
+  if (!content.error.empty()) {
+    diagnostics.error(requested_at,
+                      "cannot read base graph '" + file.string() + "': " + content.error);
+    return std::nullopt;
+  }
+  return read_document(content.text, file.string(), diagnostics);
+}
+
 }  // namespace
 
 const NodeSpec* GraphSpec::find_node(const std::string& id) const {
@@ -204,39 +320,14 @@ GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& 
   graph.variant = options.variant;
   const std::string file = display_name.string();
 
-  YAML::Node root;
-  try {
-    if (!detail::refuse_aliases(yaml, file, diagnostics)) return graph;
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& error) {
-    const SourceLocation where =
-        error.mark.is_null() ? SourceLocation{file, 0, 0}
-                             : SourceLocation{file, error.mark.line + 1, error.mark.column + 1};
-    diagnostics.error(where, error.msg);
-    return graph;
-  }
-  if (root.IsNull()) {
-    // Only blank lines and comments: empty; anything else is text yaml-cpp read as nothing.
-    bool blank = true;
-    std::istringstream lines(yaml);
-    for (std::string line; blank && std::getline(lines, line);) {
-      const std::size_t first = line.find_first_not_of(" \t\r");
-      blank = first == std::string::npos || line[first] == '#';
-    }
-    diagnostics.error({file, 0, 0}, blank ? "the graph file is empty"
-                                          : "the graph file holds no YAML value: a graph file is "
-                                            "a map (facet, name, params, nodes, ...)");
-    return graph;
-  }
-  if (!root.IsMap()) {
-    diagnostics.error(detail::location_of(root, file),
-                      "a graph file must be a map (facet, name, params, nodes, ...), got " +
-                          std::string(detail::kind_name(root)));
-    return graph;
-  }
-  detail::report_duplicate_keys(root, file, diagnostics);
-
-  RawGraph raw = detail::parse_graph_document(root, file, diagnostics);
+  std::optional<RawGraph> document = read_document(yaml, file, diagnostics);
+  if (!document) return graph;
+  RawGraph raw = std::move(*document);
+  const auto read_base = [&](const fs::path& base, const SourceLocation& requested_at) {
+    return read_base_file(base, requested_at, diagnostics);
+  };
+  detail::resolve_extends(raw, display_name, read_base, diagnostics);
+  graph.left_out = raw.removed;
   if (raw.name) graph.name = *raw.name;
   graph.description = raw.description;
   graph.variants = raw.variant_names();
@@ -249,8 +340,10 @@ GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& 
 
   detail::check_variants(raw, diagnostics);
   select_variant(raw, options.variant, file, diagnostics);
+  apply_command_line_replaces(raw, options, diagnostics);
   apply_command_line_sets(raw, options, diagnostics);
   for (const auto& node : raw.nodes) {
+    if (!node_is_wanted(node, graph.params, graph.left_out, diagnostics)) continue;
     graph.nodes.push_back(resolve_node(node, substitution, diagnostics));
   }
   graph.inputs = resolve_graph_ports(raw.graph_inputs, "input", substitution, diagnostics);
@@ -268,16 +361,9 @@ GraphSpec load_graph_file(const std::filesystem::path& file, const LoadOptions& 
     graph.graph_dir = absolute_dir_of(file);
     return graph;
   };
-  std::error_code error;
-  const auto status = fs::status(file, error);
-  if (!fs::exists(status)) return cannot_read("no such file");
-  if (fs::is_directory(status)) return cannot_read("it is a directory");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return cannot_read(std::generic_category().message(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return cannot_read("read error");
-  return load_graph_text(text.str(), file, options, diagnostics);
+  const FileText content = read_text_file(file);
+  if (!content.error.empty()) return cannot_read(content.error);
+  return load_graph_text(content.text, file, options, diagnostics);
 }
 
 }  // namespace facet

@@ -96,6 +96,10 @@ MergedGraph merge_variants(const std::vector<VariantGraph>& variants, const Merg
   MergedGraph merged;
   merged.spec = variants.front().spec;
   merged.spec.nodes.clear();
+  // Graph ports are for a program feeding one variant (docs/embedding.md); they name nodes by
+  // their own ids, which the merge renames.
+  merged.spec.inputs.clear();
+  merged.spec.outputs.clear();
   std::vector<std::string> variant_names;
   for (const auto& variant : variants) {
     merged.variants.push_back({variant.name, {}});

@@ -9,8 +9,10 @@ namespace {
 constexpr const char* kFormatVersion = "1";
 
 const std::vector<std::string> kTopLevelKeys = {
-    "facet", "name", "description", "params", "plugins", "nodes", "inputs", "outputs", "variants"};
-const std::vector<std::string> kNodeKeys = {"stage", "in", "params"};
+    "facet",  "name",    "description", "extends", "remove",  "replace",  "set",
+    "params", "plugins", "nodes",       "inputs",  "outputs", "variants", "remove_variants"};
+const std::vector<std::string> kNodeKeys = {"stage", "in", "params", "when"};
+const std::vector<std::string> kReplaceKeys = {"stage", "in", "params"};
 const std::vector<std::string> kVariantKeys = {"extends", "replace", "set"};
 const std::vector<std::string> kPluginsKeys = {"paths"};
 
@@ -28,6 +30,8 @@ class DocumentReader {
     RawGraph graph;
     bool has_version = false;
     bool has_nodes = false;
+    std::optional<SourceLocation> extends_where;
+    std::vector<MapEntry> edits;  // top-level remove/replace/set, which need a base
     for (const auto& entry : map_entries(root, file_, diagnostics_)) {
       if (entry.key == "facet") {
         has_version = true;
@@ -44,9 +48,27 @@ class DocumentReader {
         has_nodes = true;
         graph.nodes = nodes(entry);
       } else if (entry.key == "inputs") {
+        graph.has_graph_inputs = true;
         graph.graph_inputs = graph_ports(entry, "'inputs'");
       } else if (entry.key == "outputs") {
+        graph.has_graph_outputs = true;
         graph.graph_outputs = graph_ports(entry, "'outputs'");
+      } else if (entry.key == "extends") {
+        graph.extends = scalar(entry, "'extends' (the base graph's file)");
+        extends_where = entry.key_where;
+      } else if (entry.key == "remove") {
+        graph.removes = names(entry, "'remove' (node ids of the base graph)");
+        edits.push_back(entry);
+      } else if (entry.key == "remove_variants") {
+        graph.removed_variants =
+            names(entry, "'remove_variants' (variant names of the base graph)");
+        edits.push_back(entry);
+      } else if (entry.key == "replace") {
+        graph.replaces = replaces(entry, "'replace'");
+        edits.push_back(entry);
+      } else if (entry.key == "set") {
+        graph.sets = sets(entry, "'set'");
+        edits.push_back(entry);
       } else if (entry.key == "variants") {
         graph.variants = variants(entry);
       } else {
@@ -57,7 +79,15 @@ class DocumentReader {
     if (!has_version) {
       diagnostics_.error(top, "missing key 'facet' (the format version: 'facet: 1')");
     }
-    if (!has_nodes) diagnostics_.error(top, "missing key 'nodes'");
+    // A graph that extends another may add no node of its own.
+    if (!has_nodes && !extends_where) diagnostics_.error(top, "missing key 'nodes'");
+    if (!extends_where) {
+      for (const auto& edit : edits) {
+        diagnostics_.error(edit.key_where, "'" + edit.key +
+                                               "' edits the nodes of a base graph, but this graph "
+                                               "has no 'extends: BASE.yaml'");
+      }
+    }
     return graph;
   }
 
@@ -183,6 +213,8 @@ class DocumentReader {
         node.inputs = inputs(item, "'in' of " + what);
       } else if (item.key == "params") {
         node.params = settings(item, "'params' of " + what, /*check_names=*/false);
+      } else if (item.key == "when") {
+        node.when = scalar(item, "'when' of " + what + " (the name of a graph parameter)");
       } else {
         report_unknown_key(item, what, kNodeKeys, diagnostics_);
       }
@@ -208,7 +240,8 @@ class DocumentReader {
     if (!map_value(entry, what)) return variant;
     for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
       if (item.key == "extends") {
-        variant.extends = extends(item, "'extends' of " + what);
+        variant.extends =
+            names(item, "'extends' of " + what + " (a variant name or a list of them)");
       } else if (item.key == "replace") {
         variant.replaces = replaces(item, "'replace' of " + what);
       } else if (item.key == "set") {
@@ -220,16 +253,17 @@ class DocumentReader {
     return variant;
   }
 
-  std::vector<RawText> extends(const MapEntry& entry, const std::string& what) {
+  // A list of names, or one name.
+  std::vector<RawText> names(const MapEntry& entry, const std::string& what) {
     std::vector<RawText> out;
     if (entry.value.IsSequence()) {
       for (const auto& name : entry.value) {
         const SourceLocation where = location_of(name, file_);
-        if (expect_scalar(name, where, "a variant name in " + what, diagnostics_)) {
+        if (expect_scalar(name, where, "a name in " + what, diagnostics_)) {
           out.push_back({name.Scalar(), where});
         }
       }
-    } else if (auto name = scalar(entry, what + " (a variant name or a list of them)")) {
+    } else if (auto name = scalar(entry, what)) {
       out.push_back(*name);
     }
     return out;
@@ -253,7 +287,7 @@ class DocumentReader {
         } else if (part.key == "params") {
           replace.params = settings(part, "'params' of " + node_what, /*check_names=*/false);
         } else {
-          report_unknown_key(part, node_what, kNodeKeys, diagnostics_);
+          report_unknown_key(part, node_what, kReplaceKeys, diagnostics_);
         }
       }
       out.push_back(std::move(replace));

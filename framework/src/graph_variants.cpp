@@ -84,28 +84,6 @@ void check_extends_cycles(const RawGraph& graph, Diagnostics& diagnostics) {
   }
 }
 
-void apply_replace(RawNode& node, const RawReplace& replace, const std::string& variant) {
-  bool stage_changed = false;
-  if (replace.stage) {
-    stage_changed = !node.stage || node.stage->text != replace.stage->text;
-    // Remember the stage written in the file, even when several variants replace it in turn.
-    if (node.replaced_stage.empty() && node.stage) node.replaced_stage = node.stage->text;
-    node.replaced_by_variant = variant;
-    node.stage = replace.stage;
-  }
-  // The old parameters belong to the old stage: a new stage starts from its own defaults unless
-  // the variant gives parameters.
-  if (replace.params) {
-    node.params = *replace.params;
-  } else if (stage_changed) {
-    node.params.clear();
-  }
-  if (replace.inputs) {
-    node.inputs = *replace.inputs;
-    node.inputs_where = replace.inputs_where;
-  }
-}
-
 void apply_edits(RawGraph& graph, const RawVariant& variant) {
   for (const auto& replace : variant.replaces) {
     if (RawNode* node = graph.find_node(replace.node)) apply_replace(*node, replace, variant.name);
@@ -160,6 +138,28 @@ void apply_variant(RawGraph& graph, const std::string& name) {
     if (found == positions.end() || applied[found->second]) continue;
     applied[found->second] = true;
     path.push_back({found->second});
+  }
+}
+
+void apply_replace(RawNode& node, const RawReplace& replace, const std::string& variant) {
+  bool stage_changed = false;
+  if (replace.stage) {
+    stage_changed = !node.stage || node.stage->text != replace.stage->text;
+    // Remember the stage written in the file, even when several variants replace it in turn.
+    if (node.replaced_stage.empty() && node.stage) node.replaced_stage = node.stage->text;
+    node.replaced_by_variant = variant;
+    node.stage = replace.stage;
+  }
+  // The old parameters belong to the old stage: a new stage starts from its own defaults unless
+  // the variant gives parameters.
+  if (replace.params) {
+    node.params = *replace.params;
+  } else if (stage_changed) {
+    node.params.clear();
+  }
+  if (replace.inputs) {
+    node.inputs = *replace.inputs;
+    node.inputs_where = replace.inputs_where;
   }
 }
 

@@ -239,6 +239,11 @@ class GraphValidator {
     if (binding.from_node.empty()) return;  // malformed reference, reported by the loader
 
     const auto producer_it = std::find(node_ids_.begin(), node_ids_.end(), binding.from_node);
+    if (producer_it == node_ids_.end() &&
+        report_left_out(binding.from_node, binding.where,
+                        "input " + in_quotes(binding.port) + " of node " + in_quotes(spec.id))) {
+      return;
+    }
     if (producer_it == node_ids_.end()) {
       diagnostics_.error(binding.where, "unknown node " + in_quotes(binding.from_node) +
                                             " in input " + in_quotes(binding.port) + " of node " +
@@ -285,6 +290,10 @@ class GraphValidator {
     std::vector<ValidatedGraphPort> out;
     for (const auto& port : ports) {
       const auto node_it = std::find(node_ids_.begin(), node_ids_.end(), port.node);
+      if (node_it == node_ids_.end() &&
+          report_left_out(port.node, port.where, "graph " + what + " " + in_quotes(port.name))) {
+        continue;
+      }
       if (node_it == node_ids_.end()) {
         diagnostics_.error(port.where, "unknown node " + in_quotes(port.node) + " in graph " +
                                            what + " " + in_quotes(port.name) +
@@ -311,6 +320,18 @@ class GraphValidator {
           {port.name, Connection{node_index, output_index}, output->type_key, port.where});
     }
     return out;
+  }
+
+  // A reference to a node that `when:` left out. True when it was one (and is reported).
+  bool report_left_out(const std::string& node, const SourceLocation& where,
+                       const std::string& what) {
+    const auto it = std::find_if(graph_.left_out.begin(), graph_.left_out.end(),
+                                 [&](const LeftOutNode& left) { return left.id == node; });
+    if (it == graph_.left_out.end()) return false;
+    diagnostics_.error(where,
+                       "node " + in_quotes(node) + " in " + what + " is left out: " + it->reason);
+    diagnostics_.note(it->where, it->note);
+    return true;
   }
 
   // After a port error on a node whose stage a variant replaced: the ports differ because of it.

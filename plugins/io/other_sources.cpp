@@ -44,13 +44,13 @@ std::string other_source_advice(OtherSource kind, const std::string& path, PathH
   const bool one = holds == PathHolds::one_file;
   switch (kind) {
     case OtherSource::pcd:
-      // No shipped graph reads PCD, so the advice is the one node to change.
+      // No shipped graph reads PCD: the advice swaps the one node on the command line.
       return "'" + path + (one ? "' is a PCD point cloud" : "' holds PCD point clouds") +
              ", which io.frames does not read: the source stage io.pcd (plugin facet_pcd, built "
              "where PCL is found; `facet list pcd` shows whether it is here) reads a .pcd file, "
-             "a folder or a glob of them. In a copy of the graph, make the source node {stage: "
-             "io.pcd, params: {path: \"" +
-             path + "\"}} (docs/data-formats.md, 'PCD point clouds')";
+             "a folder or a glob of them. Run the graph on it with `--replace source=io.pcd "
+             "--set source.path='" +
+             path + "'` (docs/data-formats.md, 'PCD point clouds')";
     case OtherSource::oni:
       // live.yaml is the tabletop chain on io.openni2; its `uri` takes one recording.
       return "'" + path + (one ? "' is an OpenNI2 recording" : "' holds OpenNI2 recordings") +

@@ -192,9 +192,15 @@ TEST(Run, APcdOrOniInputNamesTheSourceStageThatReadsIt) {
                            " --param output=" + shell_quote((out.path() / "out").string()));
   EXPECT_EQ(pcd.exit_code, 1) << pcd.out;
   for (const char* text : {"node 'source' (io.frames)", "is a PCD point cloud", "io.pcd",
-                           "`facet list pcd`", "{stage: io.pcd, params: {path:"}) {
+                           "`facet list pcd`", "`--replace source=io.pcd --set source.path='"}) {
     EXPECT_NE(pcd.out.find(text), std::string::npos) << text << "\n" << pcd.out;
   }
+  // What it suggests makes a valid graph (io.pcd is built wherever PCL is, as in every build
+  // these tests run in).
+  const auto swapped =
+      run_cli("validate " + shell_quote(kTabletop.string()) +
+              " --replace source=io.pcd --set source.path=" + shell_quote(cloud.string()));
+  EXPECT_EQ(swapped.exit_code, 0) << swapped.out;
   EXPECT_EQ(pcd.out.find("not a folder"), std::string::npos) << pcd.out;
   const auto oni = run_cli("run " + shell_quote(kTabletop.string()) +
                            " --param input=" + shell_quote(recording.string()) +

@@ -102,27 +102,10 @@ TEST(SinksRun, TabletopCloudWritesAnOverlayAndACloudPerFrame) {
   EXPECT_EQ(frames, 2);
 }
 
-// tabletop_cloud.yaml is tabletop.yaml plus one node (variants cannot add nodes): the two must not
-// drift apart.
+// tabletop_cloud.yaml extends tabletop.yaml by one node, so the two cannot drift apart: every
+// variant of the base is one of the cloud graph's too.
 TEST(SinksRun, TabletopCloudIsTabletopPlusTheCloudNode) {
-  const auto from_nodes_on = [](const std::string& text) {
-    const auto at = text.find("\nnodes:\n");
-    return at == std::string::npos ? std::string() : text.substr(at);
-  };
-  const std::string tabletop = from_nodes_on(read_file(kTabletop));
-  std::string cloud = from_nodes_on(read_file(kTabletopCloud));
-  ASSERT_FALSE(tabletop.empty());
-  const auto begin = cloud.find("  # One PLY per frame");
-  ASSERT_NE(begin, std::string::npos);
-  // The cloud node ends where the next line of the top level (not indented) begins.
-  auto end = cloud.find('\n', begin);
-  while (end != std::string::npos && end + 1 < cloud.size() && cloud[end + 1] == ' ')
-    end = cloud.find('\n', end + 1);
-  ASSERT_NE(end, std::string::npos);
-  EXPECT_NE(cloud.substr(begin, end - begin).find("stage: io.cloud"), std::string::npos);
-  cloud.erase(begin, end + 1 - begin);
-  EXPECT_EQ(cloud, tabletop) << "change tabletop_cloud.yaml together with tabletop.yaml";
-
+  EXPECT_NE(read_file(kTabletopCloud).find("\nextends: tabletop.yaml\n"), std::string::npos);
   for (const char* variant : {"", "convex", "pca5", "pca_box"}) {
     const std::string option = *variant != 0 ? std::string(" --variant ") + variant : "";
     const auto result = run_cli("validate " + shell_quote(kTabletopCloud.string()) + option);

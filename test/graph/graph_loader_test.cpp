@@ -121,8 +121,9 @@ variants:
 TEST(GraphLoader, UnknownKeyWithoutCloseMatchListsTheAllowedKeys) {
   Diagnostics diagnostics;
   load("facet: 1\nnodes: {a: {stage: x, colour: red}}\n", diagnostics);
-  EXPECT_EQ(single_error(diagnostics),
-            "g.yaml:2:23: unknown key 'colour' in node 'a'; expected one of: stage, in, params");
+  EXPECT_EQ(
+      single_error(diagnostics),
+      "g.yaml:2:23: unknown key 'colour' in node 'a'; expected one of: stage, in, params, when");
 }
 
 TEST(GraphLoader, RequiresFormatVersionOne) {

@@ -248,6 +248,51 @@ nodes:
             "g.yaml:6:41: error: cycle: n -> y -> x -> n\n");
 }
 
+constexpr const char* kOptionalWriter = R"(facet: 1
+params: {output: ""}
+nodes:
+  source: {stage: io.frames, params: {path: rec}}
+  write: {stage: io.depth, in: {depth: source.depth}, params: {dir: "${output}/depth"}, when: output}
+)";
+
+TEST_F(ValidateGraph, ANodeWhenItsParamIsSetAndLeftOutWhenItIsEmpty) {
+  const ValidatedGraph without = validate(kOptionalWriter);
+  ASSERT_FALSE(diagnostics_.has_errors()) << diagnostics_.str();
+  EXPECT_EQ(without.find("write"), nullptr);
+  ASSERT_NE(without.find("source"), nullptr);
+
+  LoadOptions options;
+  options.params["output"] = "out";
+  const ValidatedGraph with = validate(kOptionalWriter, options);
+  ASSERT_FALSE(diagnostics_.has_errors()) << diagnostics_.str();
+  ASSERT_NE(with.find("write"), nullptr);
+  EXPECT_EQ(with.find("write")->params.get_string("dir"), "out/depth");
+}
+
+TEST_F(ValidateGraph, ReadingALeftOutNodeIsAnErrorNamingItsParam) {
+  const std::string yaml =
+      std::string(kOptionalWriter) + "  after: {stage: filter.median, in: {depth: write.depth}}\n";
+  validate(yaml);
+  // The error is at the reference, the note at the `when:` that left the node out.
+  EXPECT_EQ(single_error(diagnostics_),
+            "g.yaml:6:45: node 'write' in input 'depth' of node 'after' is left out: graph "
+            "parameter 'output' is empty");
+  EXPECT_NE(diagnostics_.str().find("g.yaml:5:"), std::string::npos) << diagnostics_.str();
+}
+
+TEST_F(ValidateGraph, WhenMustNameAGraphParameter) {
+  Diagnostics diagnostics;
+  graph_test::load(R"(facet: 1
+params: {output: ""}
+nodes:
+  source: {stage: io.frames, params: {path: rec}, when: outptu}
+)",
+                   diagnostics);
+  EXPECT_EQ(single_error(diagnostics),
+            "g.yaml:4:57: 'when' of node 'source' names no graph parameter: 'outptu'; did you "
+            "mean 'output'?");
+}
+
 TEST_F(ValidateGraph, ReplacedStageWithOtherPortsIsRefusedWithANote) {
   LoadOptions options;
   options.variant = "points";

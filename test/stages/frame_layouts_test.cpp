@@ -132,7 +132,7 @@ TEST(OtherSources, APcdFileFolderOrGlobNamesIoPcd) {
     expect_stage_error(
         [&] { runner.run(); },
         {"'" + path + "'", "PCD point cloud", "io.frames does not read", "io.pcd", "facet_pcd",
-         "{stage: io.pcd, params: {path: \"" + path + "\"}}", "docs/data-formats.md"});
+         "`--replace source=io.pcd --set source.path='" + path + "'`", "docs/data-formats.md"});
   }
 }
 

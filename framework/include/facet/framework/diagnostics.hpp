@@ -32,6 +32,11 @@ class Diagnostics {
   void warning(SourceLocation where, std::string message);
   void note(SourceLocation where, std::string message);
 
+  // Every later error or warning in `file` is followed by the note `message` at `where`: a base
+  // graph's problems then also point at the `extends:` that brought the base in, and through it
+  // at each graph further up the chain.
+  void add_file_context(std::string file, SourceLocation where, std::string message);
+
   bool has_errors() const { return error_count_ > 0; }
   int error_count() const { return error_count_; }
   const std::vector<Diagnostic>& all() const { return items_; }
@@ -41,7 +46,14 @@ class Diagnostics {
   std::string str() const;
 
  private:
+  struct FileContext {
+    std::string file;
+    Diagnostic note;
+  };
+  void add_context_notes(const std::string& file);
+
   std::vector<Diagnostic> items_;
+  std::vector<FileContext> contexts_;
   int error_count_ = 0;
 };
 

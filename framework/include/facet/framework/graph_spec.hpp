@@ -57,6 +57,15 @@ struct GraphPort {
   SourceLocation where;  // of the value "source.depth"
 };
 
+// A node written in a graph file but not in this graph: its `when:` graph parameter is empty,
+// or a graph extending the file removed it.
+struct LeftOutNode {
+  std::string id;
+  std::string reason;    // "graph parameter 'output' is empty"
+  SourceLocation where;  // of the `when:` value or the `remove:` entry
+  std::string note;      // said there: how to have the node back
+};
+
 struct GraphSpec {
   std::filesystem::path file;                 // as given; "<string>" for graphs parsed from memory
   std::string name;                           // `name:`, or the file's stem when absent
@@ -67,6 +76,7 @@ struct GraphSpec {
   std::map<std::string, std::string> params;  // graph params after --param overrides
   std::vector<std::filesystem::path> plugin_paths;  // `plugins.paths`, made absolute
   std::vector<NodeSpec> nodes;                      // in file order
+  std::vector<LeftOutNode> left_out;                // `when:` or `remove:` took them out
   std::vector<GraphPort> inputs;                    // `inputs:`, in file order
   std::vector<GraphPort> outputs;                   // `outputs:`, in file order
 
@@ -74,9 +84,10 @@ struct GraphSpec {
 };
 
 struct LoadOptions {
-  std::map<std::string, std::string> params;              // --param name=value
-  std::vector<std::pair<std::string, std::string>> sets;  // --set node.param=value, in order
-  std::string variant;                                    // --variant NAME
+  std::map<std::string, std::string> params;                  // --param name=value
+  std::vector<std::pair<std::string, std::string>> replaces;  // --replace node=stage, in order
+  std::vector<std::pair<std::string, std::string>> sets;      // --set node.param=value, in order
+  std::string variant;                                        // --variant NAME
 };
 
 // Parses and resolves a graph file. Reports every problem it can find into `diagnostics`;
