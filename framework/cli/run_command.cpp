@@ -13,6 +13,7 @@
 #include "exit_codes.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/pipelined_executor.hpp"
+#include "facet/framework/progress_text.hpp"
 #include "facet/framework/run_report.hpp"
 #include "facet/framework/statistics.hpp"
 #include "facet/framework/trace_writer.hpp"
@@ -60,10 +61,12 @@ RunStats run_graph(const RunArgs& args, const ValidatedGraph& graph, const RunOp
   return executor.run(options);
 }
 
-// A one-line progress display on an interactive terminal, refreshed at most 10 times a second.
+// A one-line progress display on an interactive terminal, refreshed at most 10 times a second:
+// frame i of N, percent and time left when N is known (progress_text).
 class ProgressLine {
  public:
-  explicit ProgressLine(bool enabled) : enabled_(enabled) {}
+  ProgressLine(bool enabled, std::int64_t max_frames)
+      : enabled_(enabled), max_frames_(max_frames), start_(std::chrono::steady_clock::now()) {}
   ~ProgressLine() { finish(); }
   ProgressLine(const ProgressLine&) = delete;
   ProgressLine& operator=(const ProgressLine&) = delete;
@@ -74,9 +77,8 @@ class ProgressLine {
     if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
     shown_ = true;
-    std::cerr << fmt::format("\r\033[Kframe {:>6}  {:<24}  {:7.2f} ms", event.index + 1, event.stem,
-                             event.frame_ms)
-              << std::flush;
+    const double elapsed_s = std::chrono::duration<double>(now - start_).count();
+    std::cerr << "\r\033[K" << progress_text(event, max_frames_, elapsed_s) << std::flush;
   }
   void finish() {
     if (shown_) std::cerr << "\r\033[K" << std::flush;
@@ -85,6 +87,8 @@ class ProgressLine {
 
  private:
   bool enabled_;
+  std::int64_t max_frames_;
+  std::chrono::steady_clock::time_point start_;
   bool shown_ = false;
   std::chrono::steady_clock::time_point last_{};
 };
@@ -118,7 +122,7 @@ int run(const RunArgs& args) {
   const SignalStop signals;
   WarningThrottle warnings;
   try {
-    ProgressLine progress(!args.quiet && isatty(STDERR_FILENO) == 1);
+    ProgressLine progress(!args.quiet && isatty(STDERR_FILENO) == 1, args.frames);
     RunOptions options;
     options.max_frames = args.frames;
     options.record_calls = !args.trace_file.empty();
@@ -212,6 +216,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   add_plugin_options(*command, args->plugins);
   command->add_option("--frames,-n", args->frames, "Stop after N frames")
       ->check(non_negative_integer());
+  command->add_flag("--view", args->graph.view,
+                    "Watch the run in a window (io.view, facet_view plugin): the graph's depth "
+                    "input and labels output, as its `inputs:`/`outputs:` name them");
   command->add_flag("--profile", args->profile,
                     "Print per-stage median and p95 time (ms) after the run");
   command->add_option("--json", args->json_file,

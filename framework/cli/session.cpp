@@ -6,6 +6,7 @@
 #include "exit_codes.hpp"
 #include "facet/framework/diagnostics.hpp"
 #include "facet/framework/plugin_loader.hpp"
+#include "view_option.hpp"
 
 namespace facet::cli {
 namespace {
@@ -107,6 +108,7 @@ std::unique_ptr<LoadedGraph> load_with(const PluginOptions& plugins,
     }
   }
   loaded->spec = load_graph_file(graph_options.graph_file, options, diagnostics);
+  if (graph_options.view) add_view_node(loaded->spec, diagnostics);
   // Validation runs even after loading errors (it skips what the loader already reported), so a
   // user sees every problem of the file at once, like a compiler.
   if (registry == nullptr) loaded->registry = load_registry(plugins, loaded->spec.plugin_paths);

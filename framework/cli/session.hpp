@@ -24,6 +24,7 @@ struct GraphOptions {
   std::vector<std::string> replaces;  // node=stage
   std::vector<std::string> sets;      // node.param=value
   std::string variant;
+  bool view = false;  // `run --view`: add a window showing the graph's depth and labels
 };
 
 void add_plugin_options(CLI::App& command, PluginOptions& options);

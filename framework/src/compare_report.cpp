@@ -125,6 +125,10 @@ void write_compare_json(std::ostream& out, const CompareSummary& summary) {
   json.key("graph").value(summary.graph);
   json.key("frames").value(summary.frames);
   json.key("warmup").value(summary.warmup);
+  json.key("frame_stems").begin_array();
+  for (const auto& stem : summary.frame_stems)
+    json.value(stem);
+  json.end_array();
   if (summary.sweep) {
     json.key("sweep");
     detail::write_sweep_json(json, *summary.sweep);
@@ -168,6 +172,14 @@ void write_compare_json(std::ostream& out, const CompareSummary& summary) {
       json.key("median").value(metric.median);
       json.key("min").value(metric.min);
       json.key("max").value(metric.max);
+      json.key("frames").begin_array();
+      for (const std::int64_t frame : metric.frames)
+        json.value(frame);
+      json.end_array();
+      json.key("values").begin_array();
+      for (const double value : metric.values)
+        json.value(value);
+      json.end_array();
       json.end_object();
     }
     json.end_array();

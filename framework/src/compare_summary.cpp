@@ -18,7 +18,10 @@ NodeRole role_of(const ValidatedNode& node) {
 
 MetricSummary summarize_metric(const std::string& node, const std::string& name,
                                const std::vector<double>& values) {
-  MetricSummary summary{node, name, values.size()};
+  MetricSummary summary;
+  summary.node = node;
+  summary.name = name;
+  summary.count = values.size();
   if (values.empty()) return summary;
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   summary.mean =
@@ -55,6 +58,7 @@ CompareSummary summarize_comparison(const MergedGraph& merged, const ValidatedGr
   summary.graph = merged.spec.name;
   summary.frames = stats.frames;
   summary.warmup = std::min(warmup, stats.frames);
+  summary.frame_stems = stats.frame_stems;
 
   // Every timed call by node index (of stats.nodes) and frame.
   std::map<std::string, std::size_t> stats_index;
@@ -95,8 +99,15 @@ CompareSummary summarize_comparison(const MergedGraph& merged, const ValidatedGr
       timing.median_ms = median(samples);
       timing.p95_ms = percentile(samples, 95.0);
       result.stages.push_back(timing);
-      for (const auto& [name, values] : stats.nodes[index->second].metrics) {
-        result.metrics.push_back(summarize_metric(original->first, name, values));
+      const NodeStats& node_stats = stats.nodes[index->second];
+      for (const auto& [name, values] : node_stats.metrics) {
+        MetricSummary metric = summarize_metric(original->first, name, values);
+        metric.values = values;
+        if (const auto frames = node_stats.metric_frames.find(name);
+            frames != node_stats.metric_frames.end()) {
+          metric.frames = frames->second;
+        }
+        result.metrics.push_back(std::move(metric));
       }
     }
     for (const auto& [frame, ms] : frame_ms)

@@ -57,8 +57,12 @@ void require_an_end(const ValidatedGraph& graph, const RunOptions& options) {
 std::vector<NodeStats> node_stats_for(const ValidatedGraph& graph) {
   std::vector<NodeStats> stats;
   stats.reserve(graph.nodes.size());
-  for (const auto& node : graph.nodes)
-    stats.push_back({node.id, node.stage->spec.name(), {}, 0, {}});
+  for (const auto& node : graph.nodes) {
+    NodeStats node_stats;
+    node_stats.id = node.id;
+    node_stats.stage = node.stage->spec.name();
+    stats.push_back(std::move(node_stats));
+  }
   return stats;
 }
 
@@ -75,21 +79,24 @@ void call_stage(Stage& stage, ProcessContext& ctx, const ValidatedNode& node,
 void account_call(NodeStats& stats, const ProcessContext& ctx, double call_ms,
                   const RunOptions& options) {
   stats.call_ms.push_back(call_ms);
+  stats.call_frames.push_back(ctx.frame_index());
   if (options.on_warning) {
     for (const auto& warning : ctx.warnings()) {
       options.on_warning("warning: node '" + ctx.node_id() + "', frame " +
                          std::to_string(ctx.frame_index()) + ": " + warning);
     }
   }
-  for (const auto& metric : ctx.metrics())
+  for (const auto& metric : ctx.metrics()) {
     stats.metrics[metric.name].push_back(metric.value);
+    stats.metric_frames[metric.name].push_back(ctx.frame_index());
+  }
 }
 
-std::string frame_stem(std::span<const Packet> outputs) {
+const FrameInfo* depth_frame_of(std::span<const Packet> outputs) {
   for (const Packet& out : outputs) {
-    if (const auto* header = out.get_if<DepthImage>()) return header->frame.stem;
+    if (const auto* header = out.get_if<DepthImage>()) return &header->frame;
   }
-  return {};
+  return nullptr;
 }
 
 }  // namespace facet::detail

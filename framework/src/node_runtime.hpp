@@ -14,6 +14,7 @@
 
 #include "facet/framework/executor.hpp"
 #include "facet/stage.hpp"
+#include "facet/types/frame.hpp"
 
 namespace facet::detail {
 
@@ -72,7 +73,7 @@ void call_stage(Stage& stage, ProcessContext& ctx, const ValidatedNode& node,
 void account_call(NodeStats& stats, const ProcessContext& ctx, double call_ms,
                   const RunOptions& options);
 
-// The file stem of a source's depth output, or empty.
-std::string frame_stem(std::span<const Packet> outputs);
+// The frame of a source's depth output (its stem and how long the stream is), or nothing.
+const FrameInfo* depth_frame_of(std::span<const Packet> outputs);
 
 }  // namespace facet::detail

@@ -101,6 +101,7 @@ struct PipelinedExecutor::Impl {
   void free_slot(Slot& slot);
   void retire();
   void drop_stale_frames(const Slot& newest);
+  const FrameInfo* frame_of(const Slot& slot) const;
   std::string stem_of(const Slot& slot) const;
   void fail(std::exception_ptr error);
 
@@ -243,13 +244,18 @@ void PipelinedExecutor::Impl::refill() {
   }
 }
 
-std::string PipelinedExecutor::Impl::stem_of(const Slot& slot) const {
+const FrameInfo* PipelinedExecutor::Impl::frame_of(const Slot& slot) const {
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     if (!nodes_[n].source || slot.state[n] != State::done) continue;
-    std::string stem = detail::frame_stem(slot.contexts[n].outputs());
-    if (!stem.empty()) return stem;
+    const FrameInfo* info = detail::depth_frame_of(slot.contexts[n].outputs());
+    if (info != nullptr && !info->stem.empty()) return info;
   }
-  return {};
+  return nullptr;
+}
+
+std::string PipelinedExecutor::Impl::stem_of(const Slot& slot) const {
+  const FrameInfo* info = frame_of(slot);
+  return info == nullptr ? std::string() : info->stem;
 }
 
 // The next stage call to make, if any. Marking nodes done without a call may complete a frame,
@@ -380,9 +386,14 @@ void PipelinedExecutor::Impl::retire() {
     }
     const double frame_ms = detail::ms_between(oldest->start, Clock::now());
     stats_.frame_ms.push_back(frame_ms);
+    const FrameInfo* info = frame_of(*oldest);
+    stats_.frame_indices.push_back(oldest->frame);
+    stats_.frame_stems.push_back(info == nullptr ? std::string() : info->stem);
     ++stats_.frames;
-    if (options_->on_frame)
-      options_->on_frame(FrameEvent{oldest->frame, stem_of(*oldest), frame_ms});
+    if (options_->on_frame) {
+      options_->on_frame(FrameEvent{oldest->frame, info == nullptr ? std::string() : info->stem,
+                                    frame_ms, info == nullptr ? 0 : info->stream_frames});
+    }
     free_slot(*oldest);
   }
 }

@@ -3,12 +3,77 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
 #include <numeric>
+#include <unordered_map>
+#include <vector>
 
 #include "facet/framework/json_writer.hpp"
 #include "facet/framework/statistics.hpp"
 
 namespace facet {
+namespace {
+
+// Where each node's calls and metric values of a frame are: frame → position in its vectors.
+class FrameLookup {
+ public:
+  explicit FrameLookup(const std::vector<std::int64_t>& frames) {
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      at_[frames[i]] = i;  // the last value of a frame, if a stage gave several
+  }
+  const std::size_t* find(std::int64_t frame) const {
+    const auto it = at_.find(frame);
+    return it == at_.end() ? nullptr : &it->second;
+  }
+
+ private:
+  std::unordered_map<std::int64_t, std::size_t> at_;
+};
+
+struct NodeLookups {
+  FrameLookup calls;
+  std::map<std::string, FrameLookup> metrics;
+};
+
+// One entry per frame that went through the graph: its time, each stage's call time and every
+// metric (eval stages' scores included), so that the worst frame is found without a rerun.
+void write_per_frame(JsonWriter& json, const RunStats& stats) {
+  std::vector<NodeLookups> lookups;
+  for (const auto& node : stats.nodes) {
+    NodeLookups lookup{FrameLookup(node.call_frames), {}};
+    for (const auto& [name, frames] : node.metric_frames)
+      lookup.metrics.emplace(name, FrameLookup(frames));
+    lookups.push_back(std::move(lookup));
+  }
+  json.key("per_frame").begin_array();
+  for (std::size_t k = 0; k < stats.frame_ms.size() && k < stats.frame_indices.size(); ++k) {
+    const std::int64_t frame = stats.frame_indices[k];
+    json.begin_object();
+    json.key("frame").value(frame);
+    json.key("stem").value(k < stats.frame_stems.size() ? stats.frame_stems[k] : std::string());
+    json.key("ms").value(stats.frame_ms[k]);
+    json.key("stages_ms").begin_object();
+    for (std::size_t n = 0; n < stats.nodes.size(); ++n) {
+      if (const std::size_t* call = lookups[n].calls.find(frame)) {
+        json.key(stats.nodes[n].id).value(stats.nodes[n].call_ms[*call]);
+      }
+    }
+    json.end_object();
+    json.key("metrics").begin_object();
+    for (std::size_t n = 0; n < stats.nodes.size(); ++n) {
+      for (const auto& [name, lookup] : lookups[n].metrics) {
+        if (const std::size_t* at = lookup.find(frame)) {
+          json.key(stats.nodes[n].id + "." + name).value(stats.nodes[n].metrics.at(name)[*at]);
+        }
+      }
+    }
+    json.end_object();
+    json.end_object();
+  }
+  json.end_array();
+}
+
+}  // namespace
 
 void write_run_json(std::ostream& out, const RunStats& stats, const std::string& graph_name,
                     const std::string& variant) {
@@ -49,6 +114,7 @@ void write_run_json(std::ostream& out, const RunStats& stats, const std::string&
   json.key("wall_ms").value(stats.wall_ms);
   json.key("dropped").value(stats.dropped);
   json.end_object();
+  write_per_frame(json, stats);
   json.end_object();
 }
 

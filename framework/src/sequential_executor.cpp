@@ -59,6 +59,7 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
     const auto frame_start = detail::Clock::now();
     bool stream_ended = false;
     std::string stem;
+    std::int64_t stream_frames = 0;
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       Node& node = *nodes_[i];
       ProcessContext& ctx = *node.ctx;
@@ -83,14 +84,20 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
           stream_ended = true;
           break;
         }
-        if (stem.empty()) stem = detail::frame_stem(ctx.outputs());
+        if (const FrameInfo* info = detail::depth_frame_of(ctx.outputs());
+            info != nullptr && stem.empty()) {
+          stem = info->stem;
+          stream_frames = info->stream_frames;
+        }
       }
     }
     if (stream_ended) break;
     const double frame_ms = detail::ms_between(frame_start, detail::Clock::now());
     stats.frame_ms.push_back(frame_ms);
+    stats.frame_indices.push_back(frame);
+    stats.frame_stems.push_back(stem);
     ++stats.frames;
-    if (options.on_frame) options.on_frame(FrameEvent{frame, stem, frame_ms});
+    if (options.on_frame) options.on_frame(FrameEvent{frame, stem, frame_ms, stream_frames});
   }
 
   // Close every stage even when one fails, then report the first failure: a sink that could not

@@ -49,6 +49,10 @@ class FilePlayback {
   // Of the frame about to be output: its index in the stream and its nominal timestamp.
   std::int64_t frame_index() const { return emitted_; }
   std::int64_t nominal_timestamp_ns() const;
+  // Frames the stream holds at most (skipped items make it fewer); 0 when looping (endless).
+  std::int64_t stream_frames() const {
+    return loop_ ? 0 : static_cast<std::int64_t>(schedule_.size());
+  }
 
   const std::vector<std::size_t>& scheduled() const { return schedule_; }
 

@@ -114,6 +114,7 @@ void FramesSource::process(ProcessContext& ctx) {
     header.camera = camera_;
     header.frame.index = playback_.frame_index();
     header.frame.stem = listing_.stems[index];
+    header.frame.stream_frames = playback_.stream_frames();
     header.frame.timestamp_ns = listing_.timestamps_ns.empty() ? playback_.nominal_timestamp_ns()
                                                                : listing_.timestamps_ns[index];
     DepthImage depth{header, {}};

@@ -237,6 +237,7 @@ void PcdSource::process(ProcessContext& ctx) {
     header.camera = camera;
     header.frame.index = playback_.frame_index();
     header.frame.stem = file.stem().string();
+    header.frame.stream_frames = playback_.stream_frames();
     header.frame.timestamp_ns = playback_.nominal_timestamp_ns();
     if (images.out_of_range > 0) {
       ctx.warn(what + ": " + std::to_string(images.out_of_range) +

@@ -360,6 +360,7 @@ void SyntheticSource::process(ProcessContext& ctx) {
   header.camera = intrinsics_;
   header.frame.index = index;
   header.frame.stem = frame_stem(preset_, seed_, index);
+  header.frame.stream_frames = frames_;  // 0: endless
   header.frame.timestamp_ns =
       static_cast<std::int64_t>(std::llround(static_cast<double>(index) * 1e9 / fps_hz_));
 

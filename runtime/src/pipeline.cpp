@@ -146,7 +146,8 @@ class Pipeline::Impl {
           result.end_of_stream = true;
           return result;
         }
-        if (stem.empty()) stem = detail::frame_stem(ctx.outputs());
+        const FrameInfo* info = detail::depth_frame_of(ctx.outputs());
+        if (stem.empty() && info != nullptr) stem = info->stem;
       }
     }
     for (const auto& port : graph_.outputs) {

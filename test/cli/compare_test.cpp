@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <map>
 #include <regex>
+#include <sstream>
 
 #include "cli_runner.hpp"
 
@@ -160,6 +163,113 @@ TEST(Compare, ObjectPipelineScoresEveryVariant) {
   EXPECT_EQ(png_files(dir / "convex" / "labels"), 2u);
   EXPECT_NE(json.find("\"merged_id\": \"objects@convex\""), std::string::npos);
   EXPECT_NE(json.find("\"merged_id\": \"blobs\""), std::string::npos);
+  // Each frame's name, and each variant's F of each frame with its frame.
+  EXPECT_TRUE(std::regex_search(
+      json, std::regex(R"re("frame_stems": \[\s*"learn[0-9]+",\s*"learn[0-9]+"\s*\])re")))
+      << json;
+  const std::regex f_values(
+      R"re("name": "f",[^}]*"frames": \[\s*0,\s*1\s*\],\s*"values": \[\s*([0-9.e+-]+),\s*([0-9.e+-]+)\s*\])re");
+  std::size_t per_frame = 0;
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), f_values);
+       it != std::sregex_iterator(); ++it) {
+    EXPECT_GT(std::stod((*it)[1].str()), 0.0);
+    EXPECT_LE(std::stod((*it)[2].str()), 1.0);
+    ++per_frame;
+  }
+  EXPECT_EQ(per_frame, 2u) << json;
+}
+
+// The figures docs/compare.md quotes come from the command named in the comment above each
+// table: a change that moves a score fails here until the doc says the new figure. Times are left
+// out (they depend on the machine); the scores do not.
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t begin = line.find('|') + 1;
+  for (std::size_t end = line.find('|', begin); end != std::string::npos;
+       begin = end + 1, end = line.find('|', begin)) {
+    std::string cell = line.substr(begin, end - begin);
+    cell.erase(0, cell.find_first_not_of(' '));
+    cell.erase(cell.find_last_not_of(' ') + 1);
+    cells.push_back(cell);
+  }
+  return cells;
+}
+
+// "variant,metric,node,,name,,count,median,,mean" rows of compare.csv: (variant, node.name) → mean.
+std::map<std::pair<std::string, std::string>, double> metric_means(const fs::path& csv) {
+  std::map<std::pair<std::string, std::string>, double> means;
+  std::istringstream lines(read_file(csv));
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> fields;
+    std::istringstream parts(line);
+    for (std::string field; std::getline(parts, field, ',');)
+      fields.push_back(field);
+    if (fields.size() >= 10 && fields[1] == "metric") {
+      means[{fields[0], fields[2] + "." + fields[4]}] = std::stod(fields[9]);
+    }
+  }
+  return means;
+}
+
+TEST(Compare, TheFiguresDocsCompareQuotesAreCurrent) {
+  // Column heading in the doc → the metric of the `score` node that it shows (its mean).
+  const std::map<std::string, std::string> columns = {
+      {"F", "score.f"},
+      {"precision", "score.precision"},
+      {"recall", "score.recall"},
+      {"objects F ≥ 0.75", "score.objects_f75_ratio"},
+      {"patches per frame", "score.segments"},
+      {"under-segmenting per frame", "score.under_segmented"}};
+  const std::string doc = read_file(source_dir() / "docs/compare.md");
+  const std::string marker = "<!-- figures of: facet compare ";
+  std::size_t checked = 0;
+  for (auto at = doc.find(marker); at != std::string::npos; at = doc.find(marker, at + 1)) {
+    const auto close = doc.find(" -->", at);
+    ASSERT_NE(close, std::string::npos);
+    const std::string args = doc.substr(at + marker.size(), close - at - marker.size());
+    const auto space = args.find(' ');
+    TempDir dir("facet-doc-figures");
+    const auto result =
+        run_cli("compare " + shell_quote((source_dir() / args.substr(0, space)).string()) +
+                args.substr(space) + " -q --images 0 --out " + shell_quote(dir.path().string()));
+    ASSERT_EQ(result.exit_code, 0) << args << "\n" << result.out;
+    const auto means = metric_means(dir / "compare.csv");
+
+    // The table right after the comment: a header, a separator, then one row per variant.
+    std::istringstream lines(doc.substr(close));
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line) && line.rfind('|', 0) != 0) {
+    }
+    const auto header = split_cells(line);
+    std::getline(lines, line);  // | --- | --- |
+    std::size_t rows = 0;
+    while (std::getline(lines, line) && line.rfind('|', 0) == 0) {
+      const auto cells = split_cells(line);
+      ASSERT_EQ(cells.size(), header.size()) << line;
+      // The variant is the first cell's first word, `quoted` or not.
+      const bool quoted = cells[0].rfind('`', 0) == 0;
+      const std::string variant = quoted ? cells[0].substr(1, cells[0].find('`', 1) - 1)
+                                         : cells[0].substr(0, cells[0].find(' '));
+      for (std::size_t c = 1; c < cells.size(); ++c) {
+        const auto column = columns.find(header[c]);
+        if (column == columns.end()) continue;
+        const auto mean = means.find({variant, column->second});
+        ASSERT_NE(mean, means.end()) << args << ": no " << column->second << " of " << variant;
+        // As precise as the doc writes it: 0.964 is 0.9635 to 0.9645.
+        const auto point = cells[c].find('.');
+        const int decimals =
+            point == std::string::npos ? 0 : static_cast<int>(cells[c].size() - point - 1);
+        EXPECT_NEAR(std::stod(cells[c]), mean->second, 0.5 * std::pow(10.0, -decimals) + 1e-9)
+            << "docs/compare.md, `facet compare " << args << "`: " << variant << " " << header[c]
+            << " is now " << mean->second;
+      }
+      ++rows;
+    }
+    EXPECT_GE(rows, 2u) << args;
+    ++checked;
+  }
+  EXPECT_GE(checked, 2u) << "the tables of docs/compare.md lost their '" << marker << "' comments";
 }
 
 TEST(Compare, UnknownVariantIsAGraphError) {

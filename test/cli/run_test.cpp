@@ -91,6 +91,39 @@ TEST(Run, FramesOptionLimitsTheRun) {
   EXPECT_NE(read_file(json).find("\"frames\": 2"), std::string::npos);
 }
 
+// --json lists every frame with its stem, time, each stage's time and every metric, scores
+// against ground truth included, so that the worst frame is found without a rerun.
+TEST(Run, JsonHoldsEachFramesTimesAndScores) {
+  TempDir out("facet-run-per-frame");
+  const auto json = out.path() / "stats.json";
+  const auto result =
+      run_cli("run " + shell_quote((source_dir() / "graphs/compare_tabletop.yaml").string()) +
+              " -q --frames 3 --threads 2 --param output=" + shell_quote(out.path().string()) +
+              " --json " + shell_quote(json.string()));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const std::string stats = read_file(json);
+  const auto per_frame = stats.find("\"per_frame\": [");
+  ASSERT_NE(per_frame, std::string::npos) << stats;
+  const std::string frames = stats.substr(per_frame);
+  // The three frames, named by their files, each with its score.
+  std::size_t stems = 0;
+  for (auto at = frames.find("\"stem\": \"learn"); at != std::string::npos;
+       at = frames.find("\"stem\": \"learn", at + 1))
+    ++stems;
+  EXPECT_EQ(stems, 3u) << frames;
+  std::size_t scores = 0;
+  for (auto at = frames.find("\"score.f\": "); at != std::string::npos;
+       at = frames.find("\"score.f\": ", at + 1)) {
+    const double f = std::stod(frames.substr(at + 11));
+    EXPECT_GT(f, 0.5);
+    EXPECT_LE(f, 1.0);
+    ++scores;
+  }
+  EXPECT_EQ(scores, 3u) << frames;
+  EXPECT_NE(frames.find("\"stages_ms\": {"), std::string::npos);
+  EXPECT_NE(frames.find("\"objects\": "), std::string::npos);
+}
+
 // A node whose required input stays empty is skipped without a word from its stage; its files
 // are then silently missing. The run says so at the end.
 TEST(Run, ANodeSkippedBecauseItsInputWasNeverSetIsReported) {
@@ -348,6 +381,32 @@ TEST(Run, EveryVariantOfTheAbGraphsIsValid) {
     }
   }
 }
+
+#if defined(FACET_HAVE_VIEW)
+// --view adds a window over the graph's depth input and labels output without editing the graph;
+// without a display the run goes on and says so once.
+TEST(Run, ViewWatchesTheRunInAWindowOfItsOwn) {
+  TempDir out("facet-run-view");
+  const std::string no_display = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM";
+  const auto result = run_cli("run " + shell_quote(kTabletop.string()) + " --view --frames 2" +
+                                  " --param output=" + shell_quote(out.path().string()),
+                              no_display);
+  EXPECT_EQ(result.exit_code, 0) << result.out;
+  EXPECT_NE(result.out.find("io.view shows nothing: no display"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("io.view shows nothing"), result.out.rfind("io.view shows nothing"))
+      << result.out;
+  EXPECT_TRUE(std::filesystem::exists(out / "labels" / "learn0.png"));
+
+  // A graph that does not say where its depth and labels are cannot be watched this way.
+  const auto faces =
+      run_cli("run " + shell_quote((source_dir() / "graphs/faces.yaml").string()) +
+                  " --view --frames 1 --param output=" + shell_quote((out / "faces").string()),
+              no_display);
+  EXPECT_EQ(faces.exit_code, 3) << faces.out;
+  EXPECT_NE(faces.out.find("--view shows the graph's depth and labels"), std::string::npos)
+      << faces.out;
+}
+#endif
 
 // Every graph shipped in graphs/ validates against the bundled plugins.
 TEST(Run, EveryShippedGraphIsValid) {

@@ -112,7 +112,7 @@ class CountingSource final : public Stage {
       return;
     }
     record_frame(ctx);
-    emit_counting_frame(ctx, gap_every_);
+    emit_counting_frame(ctx, gap_every_, frames_);
   }
 
  private:

@@ -53,10 +53,15 @@ TEST_F(PipelinedExecutorTest, SerialStagesAndSinksSeeEveryFrameInOrderOneAtATime
   const auto g = chain(40);
   facet::PipelinedExecutor executor(g, {4, 6});
   std::vector<std::int64_t> reported;
+  std::int64_t stream_frames = -1;
   facet::RunOptions options;
-  options.on_frame = [&](const facet::FrameEvent& e) { reported.push_back(e.index); };
+  options.on_frame = [&](const facet::FrameEvent& e) {
+    reported.push_back(e.index);
+    stream_frames = e.stream_frames;
+  };
   const auto stats = executor.run(options);
   EXPECT_EQ(stats.frames, 40);
+  EXPECT_EQ(stream_frames, 40);  // the source's own count
   EXPECT_EQ(frames_of("source"), iota(40));
   EXPECT_EQ(frames_of("serial"), iota(40));
   EXPECT_EQ(frames_of("sink"), iota(40));

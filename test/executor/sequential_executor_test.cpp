@@ -40,7 +40,7 @@ class Counter final : public facet::Stage {
       return;
     }
     ctx.metric("index", static_cast<double>(ctx.frame_index()));
-    facet::test::emit_counting_frame(ctx, gap_every_);
+    facet::test::emit_counting_frame(ctx, gap_every_, frames_);
   }
 
  private:
@@ -120,11 +120,17 @@ TEST_F(SequentialExecutorTest, StopsAtMaxFrames) {
   facet::RunOptions options;
   options.max_frames = 7;
   std::vector<std::string> stems;
-  options.on_frame = [&](const facet::FrameEvent& e) { stems.push_back(e.stem); };
+  std::vector<std::int64_t> stream_frames;
+  options.on_frame = [&](const facet::FrameEvent& e) {
+    stems.push_back(e.stem);
+    stream_frames.push_back(e.stream_frames);
+  };
   EXPECT_EQ(executor.run(options).frames, 7);
   ASSERT_EQ(stems.size(), 7u);
   EXPECT_EQ(stems.front(), "f0");
   EXPECT_EQ(stems.back(), "f6");
+  // The source's own count comes with every frame; the progress display cuts it to the limit.
+  EXPECT_EQ(stream_frames, std::vector<std::int64_t>(7, 100));
 }
 
 TEST_F(SequentialExecutorTest, FanOutSharesOnePayloadAmongAllConsumers) {

@@ -44,13 +44,16 @@ inline ValidatedGraph make_graph(const Registry& registry, const std::vector<Nod
   return g;
 }
 
-// What a test source emits for frame i: a 4x4 depth image holding i + 1, stem "f<i>", or nothing
-// every `gap_every`-th frame (0 = never), so that consumers with a required input are skipped.
-inline void emit_counting_frame(ProcessContext& ctx, std::int64_t gap_every) {
+// What a test source emits for frame i of `stream_frames`: a 4x4 depth image holding i + 1, stem
+// "f<i>", or nothing every `gap_every`-th frame (0 = never), so that consumers with a required
+// input are skipped.
+inline void emit_counting_frame(ProcessContext& ctx, std::int64_t gap_every,
+                                std::int64_t stream_frames) {
   if (gap_every > 0 && (ctx.frame_index() + 1) % gap_every == 0) return;
   DepthImage image;
   image.frame.index = ctx.frame_index();
   image.frame.stem = "f" + std::to_string(ctx.frame_index());
+  image.frame.stream_frames = stream_frames;
   image.depth = cv::Mat(4, 4, CV_16UC1, cv::Scalar(static_cast<double>(ctx.frame_index() + 1)));
   ctx.output("depth", std::move(image));
 }

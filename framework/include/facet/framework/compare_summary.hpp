@@ -38,6 +38,9 @@ struct MetricSummary {
   double median = 0.0;
   double min = 0.0;
   double max = 0.0;
+  // Every value with its frame, in frame order: which frame scored worst, without a rerun.
+  std::vector<std::int64_t> frames = {};
+  std::vector<double> values = {};
 };
 
 struct VariantSummary {
@@ -55,8 +58,9 @@ struct VariantSummary {
 
 struct CompareSummary {
   std::string graph;
-  std::int64_t frames = 0;  // frames run
-  std::int64_t warmup = 0;  // leading frames left out of the timing
+  std::int64_t frames = 0;               // frames run
+  std::int64_t warmup = 0;               // leading frames left out of the timing
+  std::vector<std::string> frame_stems;  // of each frame run, from its source ("" when none)
   std::vector<VariantSummary> variants;
   // Set when the variants are the points of a parameter sweep (one per point, in its order).
   std::optional<SweepSummary> sweep;

@@ -31,8 +31,10 @@ struct NodeStats {
   std::string id;
   std::string stage;
   std::vector<double> call_ms;  // one sample per frame in which the node ran, in frame order
-  std::int64_t skipped = 0;     // frames in which a required input was empty
+  std::vector<std::int64_t> call_frames;  // the frame of each call_ms sample
+  std::int64_t skipped = 0;               // frames in which a required input was empty
   std::map<std::string, std::vector<double>> metrics;
+  std::map<std::string, std::vector<std::int64_t>> metric_frames;  // the frame of each value
 };
 
 // One stage call, for traces: which node ran which frame on which thread, and when.
@@ -50,6 +52,8 @@ struct RunStats {
   // Latency of each frame, in frame order: from its first source call to the end of its last
   // stage call (with one frame at a time this is the frame's wall time).
   std::vector<double> frame_ms;
+  std::vector<std::int64_t> frame_indices;  // the frame of each frame_ms sample
+  std::vector<std::string> frame_stems;     // and its source's stem ("" when it has none)
   double wall_ms = 0.0;           // the whole run, from opening the first stage to closing the last
   std::int64_t dropped = 0;       // frames a `latest` source replaced before they were processed
   bool stopped = false;           // RunOptions::stop ended the run before the stream ended
@@ -65,6 +69,7 @@ struct FrameEvent {
   std::int64_t index;
   std::string stem;  // of the first source's depth output, when it has one
   double frame_ms;
+  std::int64_t stream_frames = 0;  // frames that source will deliver; 0 when it does not know
 };
 
 // A stage call that has been running for longer than RunOptions::stall_after.

@@ -13,7 +13,9 @@ namespace facet {
 //  "stages": {"<node id>": {"stage": ..., "calls": n, "skipped": n, "median_ms": x, "p95_ms": x,
 //                           "metrics": {"<name>": {"mean": x, "median": x, "min": x, "max": x}}}},
 //  "total": {"median_ms": x, "p95_ms": x, "fps": x, "throughput_fps": x, "wall_ms": x,
-//            "dropped": n}}
+//            "dropped": n},
+//  "per_frame": [{"frame": i, "stem": s, "ms": x, "stages_ms": {"<node id>": x},
+//                 "metrics": {"<node id>.<name>": x}}]}
 // total.median_ms and p95_ms are the per-frame latency; fps is 1000 / median_ms (what one frame
 // at a time would achieve), throughput_fps is frames / wall time (what the run achieved, with
 // several frames in flight more than fps); dropped counts frames a `latest` source replaced.

@@ -25,6 +25,9 @@ struct FrameInfo {
   std::int64_t index = 0;         // 0-based position in the stream
   std::int64_t timestamp_ns = 0;  // capture time, or index * nominal period for recordings
   std::string stem;               // name of the source file without extension, e.g. "learn0"
+  // Frames the stream will hold when the source knows it in advance (a recording played once);
+  // 0 when it does not (a camera, a topic, a looping recording). For progress displays.
+  std::int64_t stream_frames = 0;
   // The camera's coordinate frame as a ROS message header names it, e.g.
   // "camera_depth_optical_frame"; empty when the source does not say (files, OpenNI2). Carried
   // so that results published on a ROS network keep the frame of the camera they came from.
