@@ -221,6 +221,7 @@ int compare(const CompareArgs& args) {
     RunOptions options;
     options.max_frames = args.frames;
     options.record_calls = true;
+    options.record_frames = true;
     options.on_warning = [&warnings](const std::string& message) {
       if (warnings.admit(message)) std::cerr << message << '\n';
     };

@@ -126,6 +126,7 @@ int run(const RunArgs& args) {
     RunOptions options;
     options.max_frames = args.frames;
     options.record_calls = !args.trace_file.empty();
+    options.record_frames = !args.json_file.empty();
     options.source_policy =
         args.source_policy == "latest" ? SourcePolicy::latest : SourcePolicy::block;
     options.on_frame = [&](const FrameEvent& event) { progress.update(event); };

@@ -79,7 +79,7 @@ void call_stage(Stage& stage, ProcessContext& ctx, const ValidatedNode& node,
 void account_call(NodeStats& stats, const ProcessContext& ctx, double call_ms,
                   const RunOptions& options) {
   stats.call_ms.push_back(call_ms);
-  stats.call_frames.push_back(ctx.frame_index());
+  if (options.record_frames) stats.call_frames.push_back(ctx.frame_index());
   if (options.on_warning) {
     for (const auto& warning : ctx.warnings()) {
       options.on_warning("warning: node '" + ctx.node_id() + "', frame " +
@@ -88,7 +88,7 @@ void account_call(NodeStats& stats, const ProcessContext& ctx, double call_ms,
   }
   for (const auto& metric : ctx.metrics()) {
     stats.metrics[metric.name].push_back(metric.value);
-    stats.metric_frames[metric.name].push_back(ctx.frame_index());
+    if (options.record_frames) stats.metric_frames[metric.name].push_back(ctx.frame_index());
   }
 }
 

@@ -387,8 +387,10 @@ void PipelinedExecutor::Impl::retire() {
     const double frame_ms = detail::ms_between(oldest->start, Clock::now());
     stats_.frame_ms.push_back(frame_ms);
     const FrameInfo* info = frame_of(*oldest);
-    stats_.frame_indices.push_back(oldest->frame);
-    stats_.frame_stems.push_back(info == nullptr ? std::string() : info->stem);
+    if (options_->record_frames) {
+      stats_.frame_indices.push_back(oldest->frame);
+      stats_.frame_stems.push_back(info == nullptr ? std::string() : info->stem);
+    }
     ++stats_.frames;
     if (options_->on_frame) {
       options_->on_frame(FrameEvent{oldest->frame, info == nullptr ? std::string() : info->stem,

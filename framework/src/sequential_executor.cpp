@@ -94,8 +94,10 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
     if (stream_ended) break;
     const double frame_ms = detail::ms_between(frame_start, detail::Clock::now());
     stats.frame_ms.push_back(frame_ms);
-    stats.frame_indices.push_back(frame);
-    stats.frame_stems.push_back(stem);
+    if (options.record_frames) {
+      stats.frame_indices.push_back(frame);
+      stats.frame_stems.push_back(stem);
+    }
     ++stats.frames;
     if (options.on_frame) options.on_frame(FrameEvent{frame, stem, frame_ms, stream_frames});
   }

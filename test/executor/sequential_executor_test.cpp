@@ -133,6 +133,26 @@ TEST_F(SequentialExecutorTest, StopsAtMaxFrames) {
   EXPECT_EQ(stream_frames, std::vector<std::int64_t>(7, 100));
 }
 
+// Per-frame bookkeeping only when asked: a long live run does not grow by it.
+TEST_F(SequentialExecutorTest, RecordsWhichFrameEachValueBelongsToOnlyWhenAsked) {
+  const auto g = graph({{"counter", "test.counter", {{"gap_every", std::int64_t{2}}}, {}},
+                        {"sink", "test.record", {}, {"counter"}}});
+  facet::RunOptions options;
+  options.record_frames = true;
+  const auto stats = facet::SequentialExecutor(g).run(options);
+  EXPECT_EQ(stats.frame_indices, (std::vector<std::int64_t>{0, 1, 2}));
+  EXPECT_EQ(stats.frame_stems, (std::vector<std::string>{"f0", "", "f2"}));
+  // The sink was skipped in frame 1 (its input was empty): its times are of frames 0 and 2.
+  EXPECT_EQ(stats.nodes[1].call_frames, (std::vector<std::int64_t>{0, 2}));
+  EXPECT_EQ(stats.nodes[0].metric_frames.at("index"), (std::vector<std::int64_t>{0, 1, 2}));
+
+  const auto plain = facet::SequentialExecutor(g).run();
+  EXPECT_EQ(plain.frames, 3);
+  EXPECT_TRUE(plain.frame_indices.empty());
+  EXPECT_TRUE(plain.nodes[1].call_frames.empty());
+  EXPECT_TRUE(plain.nodes[0].metric_frames.empty());
+}
+
 TEST_F(SequentialExecutorTest, FanOutSharesOnePayloadAmongAllConsumers) {
   const auto g = graph({{"counter", "test.counter", {}, {}},
                         {"a", "test.record", {}, {"counter"}},

@@ -31,10 +31,10 @@ struct NodeStats {
   std::string id;
   std::string stage;
   std::vector<double> call_ms;  // one sample per frame in which the node ran, in frame order
-  std::vector<std::int64_t> call_frames;  // the frame of each call_ms sample
+  std::vector<std::int64_t> call_frames;  // the frame of each call_ms sample (record_frames)
   std::int64_t skipped = 0;               // frames in which a required input was empty
   std::map<std::string, std::vector<double>> metrics;
-  std::map<std::string, std::vector<std::int64_t>> metric_frames;  // the frame of each value
+  std::map<std::string, std::vector<std::int64_t>> metric_frames;  // each value's (record_frames)
 };
 
 // One stage call, for traces: which node ran which frame on which thread, and when.
@@ -52,7 +52,7 @@ struct RunStats {
   // Latency of each frame, in frame order: from its first source call to the end of its last
   // stage call (with one frame at a time this is the frame's wall time).
   std::vector<double> frame_ms;
-  std::vector<std::int64_t> frame_indices;  // the frame of each frame_ms sample
+  std::vector<std::int64_t> frame_indices;  // the frame of each frame_ms sample (record_frames)
   std::vector<std::string> frame_stems;     // and its source's stem ("" when it has none)
   double wall_ms = 0.0;           // the whole run, from opening the first stage to closing the last
   std::int64_t dropped = 0;       // frames a `latest` source replaced before they were processed
@@ -97,6 +97,10 @@ struct RunOptions {
   std::function<void(const std::string&)> on_warning;
   // Keep one CallRecord per stage call in RunStats::calls (for `facet run --trace`).
   bool record_calls = false;
+  // Keep which frame each time and metric value belongs to, and each frame's stem
+  // (NodeStats::call_frames, metric_frames, RunStats::frame_indices, frame_stems), for per-frame
+  // reports. Off, a long live run does not grow by them (about 0.5 KB per frame).
+  bool record_frames = false;
   // A stage call running longer than this is reported once to on_stall (zero: never). The call
   // is not interrupted: a stage cannot be stopped safely from outside, so what to do (wait, or
   // end the process) is the caller's choice.
