@@ -3,6 +3,7 @@
 // (see exit_codes.hpp) in `exit_code`.
 
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace facet::cli {
 
@@ -12,6 +13,7 @@ void add_list_command(CLI::App& app, int& exit_code);
 void add_inspect_command(CLI::App& app, int& exit_code);
 void add_dot_command(CLI::App& app, int& exit_code);
 void add_doctor_command(CLI::App& app, int& exit_code);
-void add_compare_command(CLI::App& app, int& exit_code);
+// `command_line`: the whole command as typed, for the report's provenance.
+void add_compare_command(CLI::App& app, int& exit_code, std::string command_line);
 
 }  // namespace facet::cli

@@ -15,7 +15,9 @@
 #include "facet/framework/compare_summary.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_merge.hpp"
+#include "facet/version.hpp"
 #include "option_checks.hpp"
+#include "report_context.hpp"
 #include "report_images.hpp"
 #include "session.hpp"
 #include "warning_throttle.hpp"
@@ -44,7 +46,9 @@ struct CompareArgs {
   std::int64_t warmup = 2;
   fs::path out_dir;
   int images = 3;
+  std::string images_pick = "disagree";
   int image_width = 320;
+  std::string command_line;
   bool quiet = false;
 };
 
@@ -106,6 +110,29 @@ bool write_file(const fs::path& file, const std::function<void(std::ostream&)>& 
     return false;
   }
   return true;
+}
+
+// The input depth and ground truth of each shown frame, beside the variants' images, when the
+// graph reads a dataset folder: its `input` parameter, and the `labels_dir` of its `source` node
+// (the folder of the ground truth the eval stage scores against).
+void add_input_and_truth(std::vector<ImageRow>& rows, const GraphSpec& graph, int max_width) {
+  const auto input = graph.params.find("input");
+  if (input == graph.params.end()) return;
+  std::string truth_folder;
+  if (const NodeSpec* source = graph.find_node("source")) {
+    for (const auto& param : source->params) {
+      if (param.name == "labels_dir") truth_folder = param.text;
+    }
+  }
+  const fs::path dataset(input->second);
+  std::error_code error;
+  for (auto& row : rows) {
+    const fs::path depth = dataset / "depth" / (row.stem + ".png");
+    if (fs::is_regular_file(depth, error)) row.input_uri = depth_data_uri(depth, max_width);
+    if (truth_folder.empty()) continue;
+    const fs::path truth = dataset / truth_folder / (row.stem + ".png");
+    if (fs::is_regular_file(truth, error)) row.truth_uri = png_data_uri(truth, max_width);
+  }
 }
 
 int compare(const CompareArgs& args) {
@@ -177,16 +204,21 @@ int compare(const CompareArgs& args) {
       args.out_dir.empty() ? fs::path("out/compare") / base.name : args.out_dir;
 
   std::vector<VariantGraph> variants;
+  std::vector<std::string> variant_changes;  // against the graph as written, same output folder
   for (const auto& request : requests) {
     const std::string& name = request.name;
-    LoadOptions options = base_options;
-    options.variant = request.file_variant;
-    options.sets.insert(options.sets.end(), request.sets.begin(), request.sets.end());
+    LoadOptions written_options = base_options;
     const fs::path variant_dir = out_dir / name;
     if (base.params.count(kOutputParam) > 0) {
-      options.params[kOutputParam] = variant_dir.generic_string();
+      written_options.params[kOutputParam] = variant_dir.generic_string();
     }
+    LoadOptions options = written_options;
+    options.variant = request.file_variant;
+    options.sets.insert(options.sets.end(), request.sets.begin(), request.sets.end());
     GraphSpec spec = load_graph_file(args.graph_file, options, diagnostics);
+    Diagnostics written_diagnostics;  // the same file, its problems are reported above
+    variant_changes.push_back(describe_changes(
+        load_graph_file(args.graph_file, written_options, written_diagnostics), spec));
     keep_outputs_apart(spec, registry, variant_dir);
     variants.push_back({name, std::move(spec)});
   }
@@ -257,7 +289,25 @@ int compare(const CompareArgs& args) {
   std::vector<std::pair<std::string, fs::path>> variant_dirs;
   for (const auto& name : names)
     variant_dirs.emplace_back(name, out_dir / name);
-  const auto images = collect_variant_images(variant_dirs, args.images, args.image_width);
+  ReportContext context;
+  context.facet_version = FACET_SDK_VERSION_STRING;
+  context.command_line = args.command_line;
+  context.date_utc = utc_now_text();
+  if (const auto input = base.params.find("input"); input != base.params.end()) {
+    // Relative to where the command ran when below it, as a person would have typed it.
+    std::error_code ignored;
+    context.input =
+        fs::proximate(fs::path(input->second).lexically_normal(), ignored).generic_string();
+  }
+  context.variant_changes = variant_changes;
+  const bool scored = std::any_of(summary.variants.begin(), summary.variants.end(),
+                                  [](const VariantSummary& v) { return v.find_metric("f"); });
+  context.images_where_they_disagree =
+      args.images_pick == "disagree" && scored && summary.variants.size() > 1;
+  const auto stems = frames_to_show(summary, static_cast<std::size_t>(args.images),
+                                    context.images_where_they_disagree);
+  auto images = collect_variant_images(variant_dirs, stems, args.image_width);
+  add_input_and_truth(images, base, args.image_width);
   std::vector<SweepPlotFile> plots;
   if (summary.sweep) {
     auto written_plots = write_sweep_plots(out_dir, *summary.sweep);
@@ -269,7 +319,7 @@ int compare(const CompareArgs& args) {
                        write_file(out_dir / "compare.csv",
                                   [&](std::ostream& out) { write_compare_csv(out, summary); }) &&
                        write_file(out_dir / "report.html", [&](std::ostream& out) {
-                         write_compare_html(out, summary, images, plots);
+                         write_compare_html(out, summary, images, context, plots);
                        });
   if (!written) return kRuntimeFailure;
   if (!args.quiet) {
@@ -286,8 +336,9 @@ int compare(const CompareArgs& args) {
 
 }  // namespace
 
-void add_compare_command(CLI::App& app, int& exit_code) {
+void add_compare_command(CLI::App& app, int& exit_code, std::string command_line) {
   auto args = std::make_shared<CompareArgs>();
+  args->command_line = std::move(command_line);
   CLI::App* command = app.add_subcommand(
       "compare",
       "Run variants of a graph side by side (shared nodes once) and report time, metrics and "
@@ -324,6 +375,12 @@ void add_compare_command(CLI::App& app, int& exit_code) {
                       "outputs per variant (default: out/compare/<graph name>)");
   command->add_option("--images", args->images, "Frames whose images go into the report")
       ->check(non_negative_integer())
+      ->capture_default_str();
+  command
+      ->add_option("--images-pick", args->images_pick,
+                   "Which frames: disagree (where the variants' F differs most, when they are "
+                   "scored) or first")
+      ->check(CLI::IsMember({"disagree", "first"}))
       ->capture_default_str();
   command
       ->add_option("--image-width", args->image_width,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "facet/framework/svg_plot.hpp"
@@ -18,6 +19,11 @@ th{background:#f2f2f2}
 td.shared{color:#777}
 .images td,.images th{text-align:center;vertical-align:top}
 .images img{display:block;max-width:320px;image-rendering:pixelated}
+.images .score{font-size:90%;color:#444}
+.scroll{overflow-x:auto;max-width:100%}
+td.changes,th.changes{text-align:left}
+td.changes{font-family:monospace;font-size:90%}
+p.provenance{color:#555;font-size:90%}
 svg text{font-size:12px}
 )";
 
@@ -28,7 +34,8 @@ struct Bar {
 
 // Grouped horizontal bars: one group per label, one bar per variant.
 void write_bar_chart(std::ostream& out, const std::string& title, const std::string& unit,
-                     const std::vector<Bar>& bars, const CompareSummary& summary) {
+                     const std::vector<Bar>& bars, const CompareSummary& summary,
+                     bool zoom_close_values = false) {
   const std::size_t variants = summary.variants.size();
   double largest = 0.0;
   for (const auto& bar : bars)
@@ -38,19 +45,36 @@ void write_bar_chart(std::ostream& out, const std::string& title, const std::str
   constexpr int kLabelWidth = 170;
   constexpr int kPlotWidth = 460;
   constexpr int kBarHeight = 12;
+  constexpr std::size_t kLegendPerRow = 6;  // 90 px each: any number of variants fits
   const int group_height = static_cast<int>(variants) * kBarHeight + 10;
-  const int legend_height = 18;
+  const int legend_rows = static_cast<int>((variants + kLegendPerRow - 1) / kLegendPerRow);
+  const int legend_height = 18 * std::max(legend_rows, 1);
+  // Scores all close together (0.94 .. 0.96) would look equal on an axis from 0: it then starts
+  // a little below the smallest, and says so.
+  double smallest = largest;
+  for (const auto& bar : bars)
+    for (const double value : bar.values)
+      if (value >= 0.0) smallest = std::min(smallest, value);
+  const double axis_from =
+      zoom_close_values && smallest > 0.5 * largest
+          ? std::max(0.0, std::floor((smallest - 0.1 * (largest - smallest) - 0.01) * 20.0) / 20.0)
+          : 0.0;
   const int height = legend_height + static_cast<int>(bars.size()) * group_height + 10;
   out << "<h3>" << xml_escape(title) << "</h3>\n";
+  if (axis_from > 0.0) {
+    out << fmt::format("<p>The bars start at {:.2f}, not 0: the values are close together.</p>\n",
+                       axis_from);
+  }
   out << fmt::format(R"(<svg class="chart" xmlns="http://www.w3.org/2000/svg" width="{}" )"
                      R"(height="{}" role="img" aria-label="{}">)",
                      kLabelWidth + kPlotWidth + 80, height, xml_escape(title))
       << '\n';
   for (std::size_t v = 0; v < variants; ++v) {
-    const int x = kLabelWidth + static_cast<int>(v) * 90;
-    out << fmt::format(R"(<rect x="{}" y="2" width="10" height="10" fill="{}"/>)"
-                       R"(<text x="{}" y="11">{}</text>)",
-                       x, series_colour(v), x + 14, xml_escape(summary.variants[v].name))
+    const int x = kLabelWidth + static_cast<int>(v % kLegendPerRow) * 90;
+    const int y = 2 + 18 * static_cast<int>(v / kLegendPerRow);
+    out << fmt::format(R"(<rect x="{}" y="{}" width="10" height="10" fill="{}"/>)"
+                       R"(<text x="{}" y="{}">{}</text>)",
+                       x, y, series_colour(v), x + 14, y + 9, xml_escape(summary.variants[v].name))
         << '\n';
   }
   for (std::size_t b = 0; b < bars.size(); ++b) {
@@ -62,7 +86,7 @@ void write_bar_chart(std::ostream& out, const std::string& title, const std::str
       const double value = bars[b].values[v];
       if (value < 0.0) continue;
       const int y = top + static_cast<int>(v) * kBarHeight;
-      const double width = std::max(1.0, kPlotWidth * value / largest);
+      const double width = std::max(1.0, kPlotWidth * (value - axis_from) / (largest - axis_from));
       out << fmt::format(R"(<rect x="{}" y="{}" width="{:.1f}" height="{}" fill="{}">)"
                          R"(<title>{}: {:.4g} {}</title></rect>)"
                          R"(<text x="{:.1f}" y="{}">{:.3g}</text>)",
@@ -160,16 +184,40 @@ std::vector<Bar> score_bars(const CompareSummary& summary) {
   return bars;
 }
 
-void write_summary_table(std::ostream& out, const CompareSummary& summary) {
+// The headline first: which variant scored best, by how much.
+void write_headline(std::ostream& out, const CompareSummary& summary) {
+  std::size_t best = summary.variants.size();
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    const MetricSummary* f = summary.variants[v].find_metric("f");
+    if (f == nullptr) continue;
+    if (best == summary.variants.size() ||
+        f->mean > summary.variants[best].find_metric("f")->mean) {
+      best = v;
+    }
+  }
+  if (best == summary.variants.size()) return;
+  out << fmt::format("<p class=\"headline\">Best F (mean over frames): <b>{}</b> {:.3f}",
+                     xml_escape(summary.variants[best].name),
+                     summary.variants[best].find_metric("f")->mean);
+  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+    const MetricSummary* f = summary.variants[v].find_metric("f");
+    if (v == best || f == nullptr) continue;
+    out << fmt::format("; {} {:.3f}", xml_escape(summary.variants[v].name), f->mean);
+  }
+  out << "</p>\n";
+}
+
+void write_summary_table(std::ostream& out, const CompareSummary& summary,
+                         const ReportContext& context) {
   const bool scored = !score_bars(summary).empty();
   const SweepSummary* sweep = summary.sweep ? &*summary.sweep : nullptr;
-  out << "<table id=\"summary\"><tr><th>variant</th>";
+  out << "<div class=\"scroll\"><table id=\"summary\"><tr><th>variant</th>";
   if (sweep != nullptr) {
     for (const auto& axis : sweep->axes)
       out << "<th>" << xml_escape(axis.key()) << "</th>";
   }
-  out << "<th>frame median ms</th><th>frame p95 ms</th>";
   if (scored) out << "<th>F</th><th>precision</th><th>recall</th><th>objects F&ge;0.75</th>";
+  out << "<th>frame median ms</th><th>frame p95 ms</th><th class=\"changes\">changes</th>";
   out << "</tr>\n";
   for (std::size_t v = 0; v < summary.variants.size(); ++v) {
     const VariantSummary& variant = summary.variants[v];
@@ -178,16 +226,19 @@ void write_summary_table(std::ostream& out, const CompareSummary& summary) {
       for (std::size_t a = 0; a < sweep->axes.size(); ++a)
         out << "<td>" << xml_escape(sweep->axes[a].texts[sweep->points[v].index[a]]) << "</td>";
     }
-    out << fmt::format("<td>{:.2f}</td><td>{:.2f}</td>", variant.median_ms, variant.p95_ms);
     if (scored) {
       for (const char* name : {"f", "precision", "recall", "objects_f75_ratio"}) {
         const MetricSummary* metric = variant.find_metric(name);
         out << (metric != nullptr ? fmt::format("<td>{:.3f}</td>", metric->mean) : "<td>-</td>");
       }
     }
+    out << fmt::format("<td>{:.2f}</td><td>{:.2f}</td>", variant.median_ms, variant.p95_ms);
+    const std::string changes =
+        v < context.variant_changes.size() ? context.variant_changes[v] : std::string();
+    out << "<td class=\"changes\">" << xml_escape(changes) << "</td>";
     out << "</tr>\n";
   }
-  out << "</table>\n";
+  out << "</table></div>\n";
 }
 
 void write_variant_tables(std::ostream& out, const CompareSummary& summary) {
@@ -246,41 +297,63 @@ void write_sweep(std::ostream& out, const SweepSummary& sweep,
     out << "<h3>" << xml_escape(plot.name) << "</h3>\n" << plot.svg;
 }
 
+void write_image_cell(std::ostream& out, const std::string& uri, const std::string& alt,
+                      const std::string& caption) {
+  if (uri.empty()) {
+    out << "<td>-</td>";
+    return;
+  }
+  out << fmt::format(R"(<td><img src="{}" alt="{}">)", uri, xml_escape(alt));
+  if (!caption.empty()) out << "<div class=\"score\">" << xml_escape(caption) << "</div>";
+  out << "</td>";
+}
+
+// Per output folder one table: a row per frame, with its input depth and ground truth when
+// found, then each variant's image with that variant's F of the frame under it.
 void write_images(std::ostream& out, const CompareSummary& summary,
-                  const std::vector<ImageRow>& images) {
+                  const std::vector<ImageRow>& images, bool where_they_disagree) {
   if (images.empty()) return;
   out << "<h2>Images</h2>\n";
+  out << (where_they_disagree
+              ? "<p>The frames whose F differs most between the variants, largest difference "
+                "first.</p>\n"
+              : "<p>The first frames of the run.</p>\n");
+  const bool with_input = std::any_of(images.begin(), images.end(),
+                                      [](const ImageRow& row) { return !row.input_uri.empty(); });
+  const bool with_truth = std::any_of(images.begin(), images.end(),
+                                      [](const ImageRow& row) { return !row.truth_uri.empty(); });
   std::string folder;
   for (std::size_t i = 0; i < images.size(); ++i) {
     const ImageRow& row = images[i];
     if (i == 0 || row.folder != folder) {
-      if (i > 0) out << "</table>\n";
+      if (i > 0) out << "</table></div>\n";
       folder = row.folder;
-      out << "<h3>" << xml_escape(folder) << "</h3>\n<table class=\"images\"><tr><th>frame</th>";
+      out << "<h3>" << xml_escape(folder)
+          << "</h3>\n<div class=\"scroll\"><table class=\"images\"><tr><th>frame</th>";
+      if (with_input) out << "<th>input depth</th>";
+      if (with_truth) out << "<th>ground truth</th>";
       for (const auto& variant : summary.variants)
         out << "<th>" << xml_escape(variant.name) << "</th>";
       out << "</tr>\n";
     }
     out << "<tr><td>" << xml_escape(row.stem) << "</td>";
+    if (with_input) write_image_cell(out, row.input_uri, "input depth " + row.stem, "");
+    if (with_truth) write_image_cell(out, row.truth_uri, "ground truth " + row.stem, "");
     for (std::size_t v = 0; v < summary.variants.size(); ++v) {
       const std::string& uri = v < row.data_uris.size() ? row.data_uris[v] : std::string();
-      if (uri.empty()) {
-        out << "<td>-</td>";
-      } else {
-        out << fmt::format(R"(<td><img src="{}" alt="{} {} {}"></td>)", uri,
-                           xml_escape(summary.variants[v].name), xml_escape(row.folder),
-                           xml_escape(row.stem));
-      }
+      const double f = frame_f(summary, v, row.stem);
+      write_image_cell(out, uri, summary.variants[v].name + " " + row.folder + " " + row.stem,
+                       f >= 0.0 ? fmt::format("F {:.3f}", f) : "");
     }
     out << "</tr>\n";
   }
-  out << "</table>\n";
+  out << "</table></div>\n";
 }
 
 }  // namespace
 
 void write_compare_html(std::ostream& out, const CompareSummary& summary,
-                        const std::vector<ImageRow>& images,
+                        const std::vector<ImageRow>& images, const ReportContext& context,
                         const std::vector<SweepPlotFile>& plots) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>facet compare: "
       << xml_escape(summary.graph) << "</title>\n<style>" << kStyle << "</style></head>\n<body>\n";
@@ -291,17 +364,22 @@ void write_compare_html(std::ostream& out, const CompareSummary& summary,
       "and the shared ones (sources and sinks not counted); shared stages ran once per frame for "
       "all variants.</p>\n",
       summary.variants.size(), summary.frames, summary.warmup);
+  out << "<p class=\"provenance\">facet " << xml_escape(context.facet_version) << ", "
+      << xml_escape(context.date_utc);
+  if (!context.input.empty()) out << "; input " << xml_escape(context.input);
+  out << "<br><code>" << xml_escape(context.command_line) << "</code></p>\n";
   out << "<h2>Summary</h2>\n";
-  write_summary_table(out, summary);
+  write_headline(out, summary);
+  write_summary_table(out, summary, context);
   if (summary.sweep) write_sweep(out, *summary.sweep, plots);
+  write_images(out, summary, images, context.images_where_they_disagree);
   out << "<h2>Plots</h2>\n";
+  write_bar_chart(out, "Scores against ground truth (mean over frames)", "", score_bars(summary),
+                  summary, /*zoom_close_values=*/true);
   write_bar_chart(out, "Stage median time per frame", "ms", stage_bars(summary), summary);
   write_frame_chart(out, summary);
-  write_bar_chart(out, "Scores against ground truth (mean over frames)", "", score_bars(summary),
-                  summary);
   out << "<h2>Per variant</h2>\n";
   write_variant_tables(out, summary);
-  write_images(out, summary, images);
   // Counts the images that decoded and the sweep lines the browser laid out (as SVG, with a
   // size), for a check in a headless browser; the page needs no script.
   out << "<script>window.addEventListener('load',function(){var n=0;"

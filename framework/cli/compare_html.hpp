@@ -7,13 +7,14 @@
 
 #include "compare_sweep.hpp"
 #include "facet/framework/compare_summary.hpp"
+#include "report_context.hpp"
 #include "report_images.hpp"
 
 namespace facet::cli {
 
 // `plots`: a sweep's SVG plots (compare_sweep.hpp), embedded as they are; empty otherwise.
 void write_compare_html(std::ostream& out, const CompareSummary& summary,
-                        const std::vector<ImageRow>& images,
+                        const std::vector<ImageRow>& images, const ReportContext& context,
                         const std::vector<SweepPlotFile>& plots = {});
 
 }  // namespace facet::cli

@@ -38,7 +38,10 @@ int main(int argc, char** argv) {
   facet::cli::add_inspect_command(app, exit_code);
   facet::cli::add_dot_command(app, exit_code);
   facet::cli::add_doctor_command(app, exit_code);
-  facet::cli::add_compare_command(app, exit_code);
+  std::string command_line = "facet";
+  for (int i = 1; i < argc; ++i)
+    command_line += std::string(" ") + argv[i];
+  facet::cli::add_compare_command(app, exit_code, std::move(command_line));
 
   if (const auto answered = facet::cli::answer_command_word(app, argc, argv)) return *answered;
   try {

@@ -56,15 +56,14 @@ cv::Mat coloured_labels(const cv::Mat& labels) {
 
 }  // namespace
 
-std::string png_data_uri(const fs::path& file, int max_width) {
-  cv::Mat image = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
-  if (image.empty()) return "";
-  const bool labels = image.channels() == 1 && image.depth() != CV_8U;
-  if (labels) image = coloured_labels(image);
+// Shrinks to max_width (nearest neighbour for ids and depth, whose values must not blend) and
+// encodes as a data URI.
+std::string data_uri_of(cv::Mat image, int max_width, bool nearest) {
   if (max_width > 0 && image.cols > max_width) {
     const double scale = static_cast<double>(max_width) / image.cols;
     cv::Mat small;
-    cv::resize(image, small, cv::Size(), scale, scale, labels ? cv::INTER_NEAREST : cv::INTER_AREA);
+    cv::resize(image, small, cv::Size(), scale, scale,
+               nearest ? cv::INTER_NEAREST : cv::INTER_AREA);
     image = small;
   }
   std::vector<unsigned char> bytes;
@@ -72,32 +71,58 @@ std::string png_data_uri(const fs::path& file, int max_width) {
   return "data:image/png;base64," + base64(bytes);
 }
 
+std::string png_data_uri(const fs::path& file, int max_width) {
+  cv::Mat image = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+  if (image.empty()) return "";
+  const bool labels = image.channels() == 1 && image.depth() != CV_8U;
+  if (labels) image = coloured_labels(image);
+  return data_uri_of(image, max_width, labels);
+}
+
+std::string depth_data_uri(const fs::path& file, int max_width) {
+  const cv::Mat depth = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+  if (depth.empty() || depth.type() != CV_16UC1) return "";
+  double near_mm = 0.0;
+  double far_mm = 0.0;
+  cv::minMaxLoc(depth, &near_mm, &far_mm, nullptr, nullptr, depth > 0);
+  cv::Mat grey(depth.size(), CV_8UC1, cv::Scalar(0));
+  const double span = std::max(far_mm - near_mm, 1.0);
+  for (int y = 0; y < depth.rows; ++y) {
+    const auto* in = depth.ptr<std::uint16_t>(y);
+    auto* out = grey.ptr<unsigned char>(y);
+    for (int x = 0; x < depth.cols; ++x) {
+      if (in[x] == 0) continue;
+      out[x] = static_cast<unsigned char>(255.0 - 195.0 * (in[x] - near_mm) / span);
+    }
+  }
+  return data_uri_of(grey, max_width, true);
+}
+
 std::vector<ImageRow> collect_variant_images(
-    const std::vector<std::pair<std::string, fs::path>>& variant_dirs, int frames, int max_width) {
-  // folder -> stems seen in any variant; sorted, so every variant shows the same frames.
-  std::map<std::string, std::set<std::string>> stems;
+    const std::vector<std::pair<std::string, fs::path>>& variant_dirs,
+    const std::vector<std::string>& stems, int max_width) {
+  std::set<std::string> folders;
   for (const auto& [name, dir] : variant_dirs) {
     std::error_code error;
     for (auto it = fs::recursive_directory_iterator(dir, error);
          !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
       if (!it->is_regular_file() || it->path().extension() != ".png") continue;
-      const fs::path relative = fs::relative(it->path().parent_path(), dir);
-      stems[relative.generic_string()].insert(it->path().stem().string());
+      folders.insert(fs::relative(it->path().parent_path(), dir).generic_string());
     }
   }
   std::vector<ImageRow> rows;
-  for (const auto& [folder, folder_stems] : stems) {
-    int shown = 0;
-    for (const auto& stem : folder_stems) {
-      if (shown++ >= frames) break;
-      ImageRow row{folder, stem, {}};
+  for (const auto& folder : folders) {
+    for (const auto& stem : stems) {
+      ImageRow row{folder, stem, {}, {}, {}};
+      bool any = false;
       for (const auto& [name, dir] : variant_dirs) {
         const fs::path file = dir / folder / (stem + ".png");
         std::error_code error;
-        row.data_uris.push_back(fs::is_regular_file(file, error) ? png_data_uri(file, max_width)
-                                                                 : "");
+        const bool exists = fs::is_regular_file(file, error);
+        row.data_uris.push_back(exists ? png_data_uri(file, max_width) : "");
+        any = any || exists;
       }
-      rows.push_back(std::move(row));
+      if (any) rows.push_back(std::move(row));
     }
   }
   return rows;

@@ -106,9 +106,21 @@ TEST_F(CompareAbNormals, CsvHasRowsForBothVariants) {
 TEST_F(CompareAbNormals, ReportIsSelfContained) {
   ASSERT_EQ(result_->exit_code, 0) << result_->out;
   const std::string html = read_file(dir_->path() / "report.html");
-  // Two folders (edges, patches) x two frames x two variants.
-  EXPECT_EQ(count_of(html, "<img src=\"data:image/png;base64,"), 8u);
-  EXPECT_EQ(count_of(html, "<img"), 8u);
+  // Two folders (edges, patches) x two frames x (the input depth, the ground truth and two
+  // variants).
+  EXPECT_EQ(count_of(html, "<img src=\"data:image/png;base64,"), 16u);
+  EXPECT_EQ(count_of(html, "<img"), 16u);
+  EXPECT_EQ(count_of(html, "<th>input depth</th>"), 2u);
+  EXPECT_EQ(count_of(html, "<th>ground truth</th>"), 2u);
+  // Each variant's image has its F of that frame under it; the frames are where the two differ
+  // most; the summary leads with the best F and says what each variant changes, and where the
+  // figures came from.
+  EXPECT_EQ(count_of(html, "<div class=\"score\">F 0."), 8u) << html.substr(0, 2000);
+  EXPECT_NE(html.find("largest difference first"), std::string::npos);
+  EXPECT_NE(html.find("<p class=\"headline\">Best F (mean over frames): <b>"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"changes\">normals: normals.pca"), std::string::npos);
+  EXPECT_NE(html.find("<p class=\"provenance\">facet "), std::string::npos);
+  EXPECT_NE(html.find("<code>facet compare "), std::string::npos);
   EXPECT_EQ(count_of(html, "src=\"http"), 0u);
   EXPECT_EQ(count_of(html, "href="), 0u);
   EXPECT_EQ(count_of(html, "<link"), 0u);
@@ -134,7 +146,7 @@ TEST_F(CompareAbNormals, ReportLoadsInHeadlessChromium) {
       shell_quote(dom_file.string()) + " 2> /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const std::string dom = read_file(dom_file);
-  EXPECT_NE(dom.find("data-images-loaded=\"8\""), std::string::npos) << dom.substr(0, 600);
+  EXPECT_NE(dom.find("data-images-loaded=\"16\""), std::string::npos) << dom.substr(0, 600);
   EXPECT_NE(dom.find("<table id=\"summary\">"), std::string::npos);
   EXPECT_GE(count_of(dom, "<table class=\"stages\">"), 2u);
   EXPECT_NE(dom.find("normals@pca5"), std::string::npos);

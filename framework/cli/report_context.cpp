@@ -1,0 +1,119 @@
+#include "report_context.hpp"
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <map>
+#include <numeric>
+
+namespace facet::cli {
+namespace {
+
+std::string params_text(const NodeSpec& node) {
+  std::string text;
+  for (const auto& param : node.params)
+    text += " " + param.name + "=" + param.text;
+  return text;
+}
+
+const ParamSetting* find_param(const NodeSpec& node, const std::string& name) {
+  for (const auto& param : node.params) {
+    if (param.name == name) return &param;
+  }
+  return nullptr;
+}
+
+// Frame index of each stem in the run.
+std::map<std::string, std::int64_t> frame_of_stem(const CompareSummary& summary) {
+  std::map<std::string, std::int64_t> frames;
+  for (std::size_t i = 0; i < summary.frame_stems.size(); ++i)
+    frames.emplace(summary.frame_stems[i], static_cast<std::int64_t>(i));
+  return frames;
+}
+
+double value_at(const MetricSummary& metric, std::int64_t frame) {
+  for (std::size_t i = 0; i < metric.frames.size() && i < metric.values.size(); ++i) {
+    if (metric.frames[i] == frame) return metric.values[i];
+  }
+  return -1.0;
+}
+
+}  // namespace
+
+std::string describe_changes(const GraphSpec& written, const GraphSpec& variant) {
+  std::vector<std::string> changes;
+  for (const auto& node : variant.nodes) {
+    const NodeSpec* before = written.find_node(node.id);
+    if (before == nullptr) {
+      changes.push_back("+" + node.id + ": " + node.stage + params_text(node));
+    } else if (before->stage != node.stage) {
+      changes.push_back(node.id + ": " + node.stage + params_text(node));
+    } else {
+      for (const auto& param : node.params) {
+        const ParamSetting* old = find_param(*before, param.name);
+        if (old == nullptr || old->text != param.text) {
+          changes.push_back(node.id + "." + param.name + "=" + param.text);
+        }
+      }
+    }
+  }
+  for (const auto& node : written.nodes) {
+    if (variant.find_node(node.id) == nullptr) changes.push_back("-" + node.id);
+  }
+  if (changes.empty()) return "the graph as written";
+  std::string text = changes.front();
+  for (std::size_t i = 1; i < changes.size(); ++i)
+    text += "; " + changes[i];
+  return text;
+}
+
+std::vector<std::string> frames_to_show(const CompareSummary& summary, std::size_t count,
+                                        bool where_they_disagree) {
+  const std::size_t frames = summary.frame_stems.size();
+  std::vector<std::size_t> order(frames);
+  std::iota(order.begin(), order.end(), 0);
+  if (where_they_disagree && summary.variants.size() > 1) {
+    std::vector<double> spread(frames, -1.0);
+    for (std::size_t f = 0; f < frames; ++f) {
+      double lo = 2.0;
+      double hi = -1.0;
+      for (const auto& variant : summary.variants) {
+        const MetricSummary* metric = variant.find_metric("f");
+        const double value =
+            metric == nullptr ? -1.0 : value_at(*metric, static_cast<std::int64_t>(f));
+        if (value < 0.0) continue;
+        lo = std::min(lo, value);
+        hi = std::max(hi, value);
+      }
+      if (hi >= lo) spread[f] = hi - lo;
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return spread[a] > spread[b]; });
+  }
+  std::vector<std::string> stems;
+  for (const std::size_t f : order) {
+    if (stems.size() >= count) break;
+    if (!summary.frame_stems[f].empty()) stems.push_back(summary.frame_stems[f]);
+  }
+  return stems;
+}
+
+double frame_f(const CompareSummary& summary, std::size_t v, const std::string& stem) {
+  const auto frames = frame_of_stem(summary);
+  const auto frame = frames.find(stem);
+  if (frame == frames.end() || v >= summary.variants.size()) return -1.0;
+  const MetricSummary* metric = summary.variants[v].find_metric("f");
+  return metric == nullptr ? -1.0 : value_at(*metric, frame->second);
+}
+
+std::string utc_now_text() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  return fmt::format("{:%Y-%m-%d %H:%M} UTC", utc);
+}
+
+}  // namespace facet::cli
