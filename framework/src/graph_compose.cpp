@@ -117,10 +117,11 @@ RawNode* find_reported(RawGraph& graph, const std::string& id, const SourceLocat
 
 void remove_nodes(RawGraph& graph, const std::vector<RawText>& removes,
                   const std::string& derived_file, Diagnostics& diagnostics) {
-  for (const auto& [id, where] : removes) {
-    if (find_reported(graph, id, where, "'remove'", diagnostics) == nullptr) continue;
-    std::erase_if(graph.nodes, [&](const RawNode& node) { return node.id == id; });
-    graph.removed.push_back({id, "'remove:' of " + derived_file + " takes it out", where,
+  for (const RawText& remove : removes) {
+    const std::string& id = remove.text;
+    if (find_reported(graph, id, remove.where, "'remove'", diagnostics) == nullptr) continue;
+    std::erase_if(graph.nodes, [&id](const RawNode& node) { return node.id == id; });
+    graph.removed.push_back({id, "'remove:' of " + derived_file + " takes it out", remove.where,
                              "node " + in_quotes(id) + " removed here"});
   }
 }

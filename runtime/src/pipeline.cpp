@@ -265,9 +265,11 @@ class Pipeline::Impl {
   }
 
   void check_inputs(const std::map<std::string, Packet, std::less<>>& inputs) const {
-    for (const auto& [name, packet] : inputs) {
+    for (const auto& [input_name, packet] : inputs) {
+      // A named reference: clang 14 cannot capture a structured binding in a lambda.
+      const std::string& name = input_name;
       const auto port = std::find_if(graph_.inputs.begin(), graph_.inputs.end(),
-                                     [&](const auto& p) { return p.name == name; });
+                                     [&name](const auto& p) { return p.name == name; });
       if (port == graph_.inputs.end()) {
         std::vector<std::string> names;
         for (const auto& p : graph_.inputs)
