@@ -120,9 +120,7 @@ void add_input_and_truth(std::vector<ImageRow>& rows, const GraphSpec& graph, in
   if (input == graph.params.end()) return;
   std::string truth_folder;
   if (const NodeSpec* source = graph.find_node("source")) {
-    for (const auto& param : source->params) {
-      if (param.name == "labels_dir") truth_folder = param.text;
-    }
+    if (const ParamSetting* labels = source->find_param("labels_dir")) truth_folder = labels->text;
   }
   const fs::path dataset(input->second);
   std::error_code error;

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
-#include <map>
 #include <numeric>
 
 namespace facet::cli {
@@ -17,21 +16,6 @@ std::string params_text(const NodeSpec& node) {
   for (const auto& param : node.params)
     text += " " + param.name + "=" + param.text;
   return text;
-}
-
-const ParamSetting* find_param(const NodeSpec& node, const std::string& name) {
-  for (const auto& param : node.params) {
-    if (param.name == name) return &param;
-  }
-  return nullptr;
-}
-
-// Frame index of each stem in the run.
-std::map<std::string, std::int64_t> frame_of_stem(const CompareSummary& summary) {
-  std::map<std::string, std::int64_t> frames;
-  for (std::size_t i = 0; i < summary.frame_stems.size(); ++i)
-    frames.emplace(summary.frame_stems[i], static_cast<std::int64_t>(i));
-  return frames;
 }
 
 double value_at(const MetricSummary& metric, std::int64_t frame) {
@@ -53,7 +37,7 @@ std::string describe_changes(const GraphSpec& written, const GraphSpec& variant)
       changes.push_back(node.id + ": " + node.stage + params_text(node));
     } else {
       for (const auto& param : node.params) {
-        const ParamSetting* old = find_param(*before, param.name);
+        const ParamSetting* old = before->find_param(param.name);
         if (old == nullptr || old->text != param.text) {
           changes.push_back(node.id + "." + param.name + "=" + param.text);
         }
@@ -102,11 +86,11 @@ std::vector<std::string> frames_to_show(const CompareSummary& summary, std::size
 }
 
 double frame_f(const CompareSummary& summary, std::size_t v, const std::string& stem) {
-  const auto frames = frame_of_stem(summary);
-  const auto frame = frames.find(stem);
-  if (frame == frames.end() || v >= summary.variants.size()) return -1.0;
+  const auto& stems = summary.frame_stems;
+  const auto frame = std::find(stems.begin(), stems.end(), stem);
+  if (frame == stems.end() || v >= summary.variants.size()) return -1.0;
   const MetricSummary* metric = summary.variants[v].find_metric("f");
-  return metric == nullptr ? -1.0 : value_at(*metric, frame->second);
+  return metric == nullptr ? -1.0 : value_at(*metric, frame - stems.begin());
 }
 
 std::string utc_now_text() {

@@ -19,17 +19,6 @@ constexpr std::size_t kMaxExtendsDepth = 32;
 
 const std::string kGraphDirReference = "${graph_dir}";
 
-std::string in_quotes(const std::string& text) {
-  return "'" + text + "'";
-}
-
-fs::path absolute_dir_of(const fs::path& file) {
-  std::error_code error;
-  fs::path absolute = fs::absolute(file, error);
-  if (error) absolute = file;
-  return absolute.lexically_normal().parent_path();
-}
-
 // Two spellings of one file compare equal once made canonical; a file that does not exist keeps
 // its normalised absolute path.
 fs::path identity_of(const fs::path& file) {
@@ -241,6 +230,13 @@ RawGraph fold(RawGraph base, RawGraph derived, const std::string& derived_file,
 }
 
 }  // namespace
+
+fs::path absolute_dir_of(const fs::path& file) {
+  std::error_code error;
+  fs::path absolute = fs::absolute(file, error);
+  if (error) absolute = file;
+  return absolute.lexically_normal().parent_path();
+}
 
 void resolve_extends(RawGraph& graph, const fs::path& file, const BaseGraphReader& read_base,
                      Diagnostics& diagnostics) {

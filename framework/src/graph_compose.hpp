@@ -18,6 +18,9 @@ namespace facet::detail {
 using BaseGraphReader = std::function<std::optional<RawGraph>(const std::filesystem::path& file,
                                                               const SourceLocation& requested_at)>;
 
+// The absolute folder of a graph file: what ${graph_dir} and its relative paths refer to.
+std::filesystem::path absolute_dir_of(const std::filesystem::path& file);
+
 // Replaces `graph` (read from `file`) by its composition with its bases. Without `extends:` the
 // graph stays as it is.
 void resolve_extends(RawGraph& graph, const std::filesystem::path& file,

@@ -20,6 +20,7 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
+using detail::absolute_dir_of;
 using detail::ParamSubstitution;
 using detail::RawGraph;
 using detail::RawNode;
@@ -28,13 +29,6 @@ constexpr const char* kGraphDirParam = "graph_dir";
 
 SourceLocation command_line() {
   return {kCommandLineFile, 0, 0};
-}
-
-fs::path absolute_dir_of(const fs::path& file) {
-  std::error_code error;
-  fs::path absolute = fs::absolute(file, error);
-  if (error) absolute = file;
-  return absolute.lexically_normal().parent_path();
 }
 
 // Graph params: the file's defaults, then --param. Their values may use built-ins only, so that
@@ -304,6 +298,12 @@ std::optional<RawGraph> read_base_file(const fs::path& file, const SourceLocatio
 }
 
 }  // namespace
+
+const ParamSetting* NodeSpec::find_param(const std::string& name) const {
+  const auto it = std::find_if(params.begin(), params.end(),
+                               [&](const ParamSetting& p) { return p.name == name; });
+  return it == params.end() ? nullptr : &*it;
+}
 
 const NodeSpec* GraphSpec::find_node(const std::string& id) const {
   const auto it =

@@ -16,10 +16,6 @@ const std::vector<std::string> kReplaceKeys = {"stage", "in", "params"};
 const std::vector<std::string> kVariantKeys = {"extends", "replace", "set"};
 const std::vector<std::string> kPluginsKeys = {"paths"};
 
-std::string in_quotes(const std::string& text) {
-  return "'" + text + "'";
-}
-
 // Reads one document; holds the file name and the diagnostics so that each step stays short.
 class DocumentReader {
  public:

@@ -84,8 +84,8 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
           stream_ended = true;
           break;
         }
-        if (const FrameInfo* info = detail::depth_frame_of(ctx.outputs());
-            info != nullptr && stem.empty()) {
+        const FrameInfo* info = stem.empty() ? detail::depth_frame_of(ctx.outputs()) : nullptr;
+        if (info != nullptr) {
           stem = info->stem;
           stream_frames = info->stream_frames;
         }

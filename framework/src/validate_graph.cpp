@@ -12,6 +12,7 @@
 namespace facet {
 namespace {
 
+using detail::in_quotes;
 using detail::suggestion_suffix;
 
 template <class Item>
@@ -20,10 +21,6 @@ std::vector<std::string> names_of(const std::vector<Item>& items) {
   for (const auto& item : items)
     names.push_back(item.name);
   return names;
-}
-
-std::string in_quotes(const std::string& text) {
-  return "'" + text + "'";
 }
 
 // One node while it is being checked; `inputs` hold file indices until the order is known.

@@ -173,4 +173,8 @@ std::string join(const std::vector<std::string>& items, std::string_view separat
   return out;
 }
 
+std::string in_quotes(const std::string& text) {
+  return "'" + text + "'";
+}
+
 }  // namespace facet::detail

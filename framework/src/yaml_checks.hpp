@@ -61,4 +61,7 @@ bool is_identifier(std::string_view text);
 
 std::string join(const std::vector<std::string>& items, std::string_view separator);
 
+// 'text', as names appear in diagnostics.
+std::string in_quotes(const std::string& text);
+
 }  // namespace facet::detail

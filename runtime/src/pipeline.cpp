@@ -146,8 +146,8 @@ class Pipeline::Impl {
           result.end_of_stream = true;
           return result;
         }
-        const FrameInfo* info = detail::depth_frame_of(ctx.outputs());
-        if (stem.empty() && info != nullptr) stem = info->stem;
+        const FrameInfo* info = stem.empty() ? detail::depth_frame_of(ctx.outputs()) : nullptr;
+        if (info != nullptr) stem = info->stem;
       }
     }
     for (const auto& port : graph_.outputs) {

@@ -29,10 +29,7 @@ inline std::string single_error(const Diagnostics& diagnostics) {
 }
 
 inline const ParamSetting* find_param(const NodeSpec& node, const std::string& name) {
-  for (const auto& param : node.params) {
-    if (param.name == name) return &param;
-  }
-  return nullptr;
+  return node.find_param(name);
 }
 
 }  // namespace facet::graph_test

@@ -45,6 +45,8 @@ struct NodeSpec {
   // ports differ from the file's: the stage written in the file and the variant that replaced it.
   std::string replaced_stage;
   std::string replaced_by_variant;
+
+  const ParamSetting* find_param(const std::string& name) const;
 };
 
 // `inputs: {depth: source.depth}` and `outputs: {labels: objects.objects}`: a named port of the
