@@ -97,6 +97,8 @@ std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& 
 // The table's outline is the hull of the points on every 8th row and column: a few thousand of
 // them, whose hull is within a few millimetres of the full one.
 constexpr int kOutlineStridePx = 8;
+// A patch outlines the table when at least this share of its points lies on the table's level.
+constexpr double kOutlinePatchShare = 0.25;
 
 // The valid pixels of the frame, counted on every 4th row (the level sizes they are compared
 // with are coarse shares of the view).
@@ -639,8 +641,19 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
     for (std::size_t c = 0; c < plane_count; ++c)
       table_ids[c + 1] = roles[c] == PlaneRole::table;
     planes.table_id = table_id;
-    planes.table_outline_m = table_outline(plane_labels.labels, xyz, table_ids,
-                                           accepted[table_id - 1], up, kOutlineStridePx);
+    // The table's patches: those of which a good share lies on the table's plane. A share, not a
+    // majority: beyond 2 m a table's own disparity steps put much of it more than delta off.
+    std::vector<char> table_patches(patch_slots, 0);
+    for (std::size_t slot = 1; slot < patch_slots; ++slot) {
+      std::int64_t on_table_px = 0;
+      for (std::size_t c = 0; c < plane_count; ++c) {
+        if (table_ids[c + 1] != 0) on_table_px += near_px[slot * plane_count + c];
+      }
+      table_patches[slot] = static_cast<double>(on_table_px) >=
+                            kOutlinePatchShare * static_cast<double>(patch_px[slot]);
+    }
+    planes.table_outline_m = table_outline(plane_labels.labels, labels, table_patches, xyz,
+                                           table_ids, accepted[table_id - 1], up, kOutlineStridePx);
   }
 
   if (valid_px == 0) {
