@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Writes the development data sets: generated scenes of every io.synthetic preset with their
-# ground truth, in the dataset layout (docs/data-formats.md), in two sets with disjoint seeds:
+# ground truth, in the dataset layout (docs/data-formats.md), in three sets with disjoint seeds:
 #
-#   OUT/tune/<preset>    seeds 1 .. FRAMES          for tuning the pipeline
-#   OUT/check/<preset>   seeds 1001 .. 1000+FRAMES  for checking it on layouts it was not tuned on
+#   OUT/tune/<preset>     seeds 1 .. FRAMES          for tuning the pipeline
+#   OUT/check/<preset>    seeds 1001 .. 1000+FRAMES  for checking it on layouts it was not tuned on
+#   OUT/holdout/<preset>  seeds 2001 .. 2000+FRAMES  looked at only to confirm a change that
+#                                                    gained on both others (docs/evaluation.md)
 #
 # Each seed is one frame of a new layout (source.scene=new), named <preset>_<seed>_000000, so a
 # frame is regenerated from its name alone. The view is drawn per layout as well: camera height
@@ -24,9 +26,9 @@ view=(--set source.camera=random --set source.table_edge=random
   --set source.wall_placement=random)
 [[ "${VIEW:-random}" == fixed ]] && view=()
 
-for set_name in tune check; do
-  first=1
-  [[ "$set_name" == check ]] && first=1001
+declare -A first_seed=([tune]=1 [check]=1001 [holdout]=2001)
+for set_name in tune check holdout; do
+  first=${first_seed[$set_name]}
   for preset in $presets; do
     dir="$out/$set_name/$preset"
     for ((seed = first; seed < first + frames; ++seed)); do

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Scores graphs/tabletop.yaml on generated development sets (scripts/make_dev_sets.sh writes them:
-# SETS/tune/<preset>/ and SETS/check/<preset>/, disjoint seeds) against their whole-object ground
-# truth, as a markdown table: one row per preset and set, the mean F of each set, and the gap
-# between the sets (tuning minus checking). A default that wins on one set and loses on the other
-# is not a default.
+# SETS/tune/<preset>/, SETS/check/<preset>/ and SETS/holdout/<preset>/, disjoint seeds; a set
+# that is missing is left out) against their whole-object ground truth, as a markdown table: one
+# row per preset and set, the mean F of each set, and the gap between tuning and checking sets.
+# A default that wins on one set and loses on another is not a default.
 #
 #   scripts/score_generated.sh SCORER SETS [OUT] [-- TABLETOP ARGS...]
 #     SCORER  path of the scoring script (score.py), run with the system python3
@@ -27,7 +27,8 @@ summary() {  # the ALL row of score.py: P R F seg over under merged
 echo "| set | preset | frames | P | R | **F** | seg [%] | over | under | merged |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 declare -A f_sum f_count
-for set in tune check; do
+for set in tune check holdout; do
+  [[ -d "$sets/$set" ]] || continue
   for scenes in "$sets/$set"/*/; do
     scenes="${scenes%/}"
     preset="$(basename "$scenes")"
@@ -46,5 +47,9 @@ done
 tune=$(awk -v s="${f_sum[tune]:-0}" -v n="${f_count[tune]:-1}" 'BEGIN {printf "%.3f", s / n}')
 check=$(awk -v s="${f_sum[check]:-0}" -v n="${f_count[check]:-1}" 'BEGIN {printf "%.3f", s / n}')
 gap=$(awk -v a="$tune" -v b="$check" 'BEGIN {printf "%+.3f", a - b}')
+holdout=""
+if [[ -n "${f_count[holdout]:-}" ]]; then
+  holdout=$(awk -v s="${f_sum[holdout]}" -v n="${f_count[holdout]}" 'BEGIN {printf ", holdout %.3f", s / n}')
+fi
 echo
-echo "mean F over presets: tune $tune, check $check, gap (tune - check) $gap"
+echo "mean F over presets: tune $tune, check $check, gap (tune - check) $gap$holdout"
