@@ -9,18 +9,6 @@
 namespace facet::detail {
 namespace {
 
-const char* goal_name(ScoreGoal goal) {
-  switch (goal) {
-    case ScoreGoal::higher:
-      return "higher";
-    case ScoreGoal::lower:
-      return "lower";
-    case ScoreGoal::none:
-      break;
-  }
-  return "none";
-}
-
 void write_axis_value(JsonWriter& json, const SweepAxis& axis, std::size_t index) {
   const double value = axis.values[index];
   if (axis.integral) {

@@ -95,16 +95,6 @@ std::optional<SweepPlateau> plateau_along(const SweepSummary& sweep, const Sweep
 
 }  // namespace
 
-ScoreGoal goal_of_metric(const std::string& metric_name) {
-  for (const char* lower : {"over_segmented", "under_segmented", "merged_objects"}) {
-    if (metric_name == lower) return ScoreGoal::lower;
-  }
-  for (const char* none : {"truth_objects", "segments", "scored"}) {
-    if (metric_name == none) return ScoreGoal::none;
-  }
-  return ScoreGoal::higher;
-}
-
 const SweepScore* SweepSummary::find_score(const std::string& key) const {
   const auto it =
       std::find_if(scores.begin(), scores.end(), [&](const SweepScore& s) { return s.key == key; });

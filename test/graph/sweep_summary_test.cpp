@@ -293,6 +293,16 @@ TEST(SweepGridSummary, ScoresAreTheEvalStagesMetricsWhenThereAreAny) {
   EXPECT_NE(plain.find_score("patches.patches"), nullptr);
 }
 
+TEST(ScoreGoalOfAMetric, TimesAndSplitsAreBetterLowSceneCountsHaveNoBest) {
+  EXPECT_EQ(goal_of_metric("f"), ScoreGoal::higher);
+  EXPECT_EQ(goal_of_metric("fit_ms"), ScoreGoal::lower);
+  EXPECT_EQ(goal_of_metric("latency_ms"), ScoreGoal::lower);
+  EXPECT_EQ(goal_of_metric("over_segmented"), ScoreGoal::lower);
+  EXPECT_EQ(goal_of_metric("segments"), ScoreGoal::none);
+  EXPECT_EQ(goal_of_metric("msec"), ScoreGoal::higher);
+  EXPECT_STREQ(goal_name(ScoreGoal::lower), "lower");
+}
+
 TEST(WidestRun, KnownValues) {
   const std::vector<double> x = {0, 1, 2, 3, 4, 5, 6};
   EXPECT_FALSE(widest_run_at_least(x, {0, 0, 0, 0, 0, 0, 0}, 1.0).has_value());

@@ -10,18 +10,12 @@
 #include <utility>
 #include <vector>
 
+#include "facet/framework/score_goal.hpp"
 #include "facet/framework/sweep_spec.hpp"
 
 namespace facet {
 
 struct CompareSummary;
-
-// Which way a score is better. Times and the over-/under-segmentation counts are better low;
-// counts that describe the scene rather than the result (truth objects, segments, scored frames)
-// have no best; every other metric is taken as better high.
-enum class ScoreGoal { higher, lower, none };
-
-ScoreGoal goal_of_metric(const std::string& metric_name);
 
 struct SweepScore {
   std::string key;     // "score.f" (node.metric), or "frame_ms" for the time per frame
