@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "facet/framework/compare_summary.hpp"
+
 namespace facet::detail {
 namespace {
 
@@ -62,7 +64,11 @@ void write_sweep_findings(std::ostream& out, const SweepSummary& sweep) {
                        score.goal == ScoreGoal::lower ? "  (lower is better)" : "");
   }
   if (sweep.headline.empty()) {
-    out << "\nno plateau: no stage reports the metric '" << kHeadlineMetric << "'\n";
+    out << "\nno plateau: no stage reports the metric '" << kDefaultHeadlineMetric << "'\n";
+    return;
+  }
+  if (sweep.find_score(sweep.headline) == nullptr) {
+    out << "\nno plateau: no point reported the headline metric '" << sweep.headline << "'\n";
     return;
   }
   for (const auto& plateau : sweep.plateaus) {

@@ -78,6 +78,11 @@ TEST_F(CompareAbNormals, JsonTellsSharedFromPrivateStages) {
   const std::string json = read_file(dir_->path() / "compare.json");
   EXPECT_NE(json.find("\"graph\": \"ab_normals\""), std::string::npos) << json.substr(0, 400);
   EXPECT_NE(json.find("\"warmup\": 1"), std::string::npos);
+  // The graph names no headline: the report leads with F, the first node's that reports one.
+  EXPECT_TRUE(std::regex_search(
+      json, std::regex(R"re("headline": \{\s*"metric": "score.f",\s*"better": "higher",\s*)re"
+                       R"re("from_graph": false,\s*"reported": true)re")))
+      << json.substr(0, 600);
   // median is upstream of the difference: one node, shared; normals differ: one per variant.
   const std::regex shared_median(
       R"re("node": "median",\s*"merged_id": "median",\s*"stage": "filter.median",\s*"role": "process",\s*"shared": true)re");
@@ -171,6 +176,11 @@ TEST(Compare, ObjectPipelineScoresEveryVariant) {
     ++scored;
   }
   EXPECT_EQ(scored, 2u) << json;
+  // The graph names its headline, F.
+  EXPECT_TRUE(std::regex_search(
+      json, std::regex(R"re("headline": \{\s*"metric": "score.f",\s*"better": "higher",\s*)re"
+                       R"re("from_graph": true,\s*"reported": true)re")))
+      << json.substr(0, 600);
   EXPECT_EQ(png_files(dir / "base" / "overlay"), 2u);
   EXPECT_EQ(png_files(dir / "convex" / "labels"), 2u);
   EXPECT_NE(json.find("\"merged_id\": \"objects@convex\""), std::string::npos);
