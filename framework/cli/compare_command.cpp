@@ -305,10 +305,13 @@ int compare(const CompareArgs& args) {
   context.command_line = args.command_line;
   context.date_utc = utc_now_text();
   if (const auto input = base.params.find("input"); input != base.params.end()) {
-    // Relative to where the command ran when below it, as a person would have typed it.
+    // Relative to where the command ran, as a person would have typed it: worked out on the
+    // text, so that a folder reached through a symbolic link is named by the link.
     std::error_code ignored;
-    context.input =
-        fs::proximate(fs::path(input->second).lexically_normal(), ignored).generic_string();
+    context.input = fs::path(input->second)
+                        .lexically_normal()
+                        .lexically_proximate(fs::current_path(ignored))
+                        .generic_string();
   }
   context.variant_changes = variant_changes;
   const bool scored = summary.headline && summary.headline->reported;
