@@ -18,6 +18,7 @@
 #include "facet/version.hpp"
 #include "option_checks.hpp"
 #include "report_context.hpp"
+#include "report_headline.hpp"
 #include "report_images.hpp"
 #include "session.hpp"
 #include "warning_throttle.hpp"
@@ -131,6 +132,17 @@ void add_input_and_truth(std::vector<ImageRow>& rows, const GraphSpec& graph, in
     const fs::path truth = dataset / truth_folder / (row.stem + ".png");
     if (fs::is_regular_file(truth, error)) row.truth_uri = png_data_uri(truth, max_width);
   }
+}
+
+// A headline the graph names but no variant reported is a mistake in the graph (a misspelt
+// metric) or a run that did not score; the report says so too, instead of naming a best variant.
+void warn_if_headline_is_missing(const CompareSummary& summary) {
+  if (!summary.headline || !summary.headline->from_graph || summary.headline->reported) return;
+  Diagnostics diagnostics;
+  diagnostics.warning(summary.headline->where, "headline " + summary.headline->key() +
+                                                   ": no variant reported it; " +
+                                                   why_headline_is_missing(summary));
+  diagnostics.print(std::cerr);
 }
 
 int compare(const CompareArgs& args) {
@@ -277,6 +289,7 @@ int compare(const CompareArgs& args) {
         summarize_sweep(summary, sweep.axes, sweep.points, args.variant, args.plateau_within);
   }
   write_compare_table(std::cout, summary);
+  warn_if_headline_is_missing(summary);
 
   std::error_code error;
   fs::create_directories(out_dir, error);
@@ -292,14 +305,16 @@ int compare(const CompareArgs& args) {
   context.command_line = args.command_line;
   context.date_utc = utc_now_text();
   if (const auto input = base.params.find("input"); input != base.params.end()) {
-    // Relative to where the command ran when below it, as a person would have typed it.
+    // Relative to where the command ran, as a person would have typed it: worked out on the
+    // text, so that a folder reached through a symbolic link is named by the link.
     std::error_code ignored;
-    context.input =
-        fs::proximate(fs::path(input->second).lexically_normal(), ignored).generic_string();
+    context.input = fs::path(input->second)
+                        .lexically_normal()
+                        .lexically_proximate(fs::current_path(ignored))
+                        .generic_string();
   }
   context.variant_changes = variant_changes;
-  const bool scored = std::any_of(summary.variants.begin(), summary.variants.end(),
-                                  [](const VariantSummary& v) { return v.find_metric("f"); });
+  const bool scored = summary.headline && summary.headline->reported;
   context.images_where_they_disagree =
       args.images_pick == "disagree" && scored && summary.variants.size() > 1;
   const auto stems = frames_to_show(summary, static_cast<std::size_t>(args.images),
@@ -359,8 +374,9 @@ void add_compare_command(CLI::App& app, int& exit_code, std::string command_line
                       "the graph as written)");
   command
       ->add_option("--plateau-within", args->plateau_within,
-                   "With --sweep: the plateau of F is the widest range of a parameter over which "
-                   "F stays within this much of its best")
+                   "With --sweep: the plateau of the headline score (the graph's 'headline:', "
+                   "F by default) is the widest range of a parameter over which it stays within "
+                   "this much of its best")
       ->check(non_negative_number())
       ->capture_default_str();
   command->add_option("--frames,-n", args->frames, "Stop after N frames")
@@ -376,8 +392,8 @@ void add_compare_command(CLI::App& app, int& exit_code, std::string command_line
       ->capture_default_str();
   command
       ->add_option("--images-pick", args->images_pick,
-                   "Which frames: disagree (where the variants' F differs most, when they are "
-                   "scored) or first")
+                   "Which frames: disagree (where the variants' headline metric, F by "
+                   "default, differs most, when they report it) or first")
       ->check(CLI::IsMember({"disagree", "first"}))
       ->capture_default_str();
   command

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "facet/framework/svg_plot.hpp"
+#include "report_headline.hpp"
 
 namespace facet::cli {
 namespace {
@@ -24,6 +25,10 @@ td.shared{color:#777}
 td.changes,th.changes{text-align:left}
 td.changes{font-family:monospace;font-size:90%}
 p.provenance{color:#555;font-size:90%}
+p.headline{font-size:110%}
+p.headline.missing{color:#a00}
+th.headline,td.headline{background:#fff6d5}
+td.best{font-weight:bold}
 svg text{font-size:12px}
 )";
 
@@ -168,55 +173,36 @@ std::vector<Bar> stage_bars(const CompareSummary& summary) {
   return bars;
 }
 
-// The eval scores, when some variant reports them: F, P, R and objects with F >= 0.75.
+// The scores against ground truth, when some variant reports them (F, P, R and objects with
+// F >= 0.75), the headline's first; one axis from 0 to 1 fits them all.
 std::vector<Bar> score_bars(const CompareSummary& summary) {
   std::vector<Bar> bars;
-  for (const char* name : {"f", "precision", "recall", "objects_f75_ratio"}) {
-    Bar bar{name, {}};
-    bool any = false;
+  for (const ScoreColumn& column : score_columns(summary)) {
+    if (!column.against_truth) continue;
+    Bar bar{column.metric, {}};
     for (const auto& variant : summary.variants) {
-      const MetricSummary* metric = variant.find_metric(name);
+      const MetricSummary* metric = column.node.empty()
+                                        ? variant.find_metric(column.metric)
+                                        : variant.find_metric(column.node, column.metric);
       bar.values.push_back(metric != nullptr ? metric->mean : -1.0);
-      any = any || metric != nullptr;
     }
-    if (any) bars.push_back(std::move(bar));
+    bars.push_back(std::move(bar));
   }
   return bars;
 }
 
-// The headline first: which variant scored best, by how much.
-void write_headline(std::ostream& out, const CompareSummary& summary) {
-  std::size_t best = summary.variants.size();
-  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
-    const MetricSummary* f = summary.variants[v].find_metric("f");
-    if (f == nullptr) continue;
-    if (best == summary.variants.size() ||
-        f->mean > summary.variants[best].find_metric("f")->mean) {
-      best = v;
-    }
-  }
-  if (best == summary.variants.size()) return;
-  out << fmt::format("<p class=\"headline\">Best F (mean over frames): <b>{}</b> {:.3f}",
-                     xml_escape(summary.variants[best].name),
-                     summary.variants[best].find_metric("f")->mean);
-  for (std::size_t v = 0; v < summary.variants.size(); ++v) {
-    const MetricSummary* f = summary.variants[v].find_metric("f");
-    if (v == best || f == nullptr) continue;
-    out << fmt::format("; {} {:.3f}", xml_escape(summary.variants[v].name), f->mean);
-  }
-  out << "</p>\n";
-}
-
 void write_summary_table(std::ostream& out, const CompareSummary& summary,
                          const ReportContext& context) {
-  const bool scored = !score_bars(summary).empty();
+  const std::vector<ScoreColumn> scores = score_columns(summary);
+  const auto best = summary.headline ? summary.headline->best(summary.variants) : std::nullopt;
   const SweepSummary* sweep = summary.sweep ? &*summary.sweep : nullptr;
   out << "<div class=\"scroll\"><table id=\"summary\"><tr><th>variant</th>";
   if (sweep != nullptr) {
     for (const auto& axis : sweep->axes)
       out << "<th>" << xml_escape(axis.key()) << "</th>";
   }
-  if (scored) out << "<th>F</th><th>precision</th><th>recall</th><th>objects F&ge;0.75</th>";
+  for (const ScoreColumn& column : scores)
+    out << (column.headline ? "<th class=\"headline\">" : "<th>") << column.html_label << "</th>";
   out << "<th>frame median ms</th><th>frame p95 ms</th><th class=\"changes\">changes</th>";
   out << "</tr>\n";
   for (std::size_t v = 0; v < summary.variants.size(); ++v) {
@@ -226,11 +212,15 @@ void write_summary_table(std::ostream& out, const CompareSummary& summary,
       for (std::size_t a = 0; a < sweep->axes.size(); ++a)
         out << "<td>" << xml_escape(sweep->axes[a].texts[sweep->points[v].index[a]]) << "</td>";
     }
-    if (scored) {
-      for (const char* name : {"f", "precision", "recall", "objects_f75_ratio"}) {
-        const MetricSummary* metric = variant.find_metric(name);
-        out << (metric != nullptr ? fmt::format("<td>{:.3f}</td>", metric->mean) : "<td>-</td>");
-      }
+    for (const ScoreColumn& column : scores) {
+      const MetricSummary* metric = column.node.empty()
+                                        ? variant.find_metric(column.metric)
+                                        : variant.find_metric(column.node, column.metric);
+      // The headline's column stands out, its best value most.
+      const char* cell = !column.headline ? "<td>"
+                         : best == v      ? "<td class=\"headline best\">"
+                                          : "<td class=\"headline\">";
+      out << cell << (metric != nullptr ? fmt::format("{:.3f}", metric->mean) : "-") << "</td>";
     }
     out << fmt::format("<td>{:.2f}</td><td>{:.2f}</td>", variant.median_ms, variant.p95_ms);
     const std::string changes =
@@ -309,15 +299,18 @@ void write_image_cell(std::ostream& out, const std::string& uri, const std::stri
 }
 
 // Per output folder one table: a row per frame, with its input depth and ground truth when
-// found, then each variant's image with that variant's F of the frame under it.
+// found, then each variant's image with that variant's headline value (F) of the frame under it.
 void write_images(std::ostream& out, const CompareSummary& summary,
                   const std::vector<ImageRow>& images, bool where_they_disagree) {
   if (images.empty()) return;
+  const std::string label = summary.headline ? summary.headline->label() : std::string();
   out << "<h2>Images</h2>\n";
-  out << (where_they_disagree
-              ? "<p>The frames whose F differs most between the variants, largest difference "
-                "first.</p>\n"
-              : "<p>The first frames of the run.</p>\n");
+  if (where_they_disagree) {
+    out << "<p>The frames whose " << xml_escape(label)
+        << " differs most between the variants, largest difference first.</p>\n";
+  } else {
+    out << "<p>The first frames of the run.</p>\n";
+  }
   const bool with_input = std::any_of(images.begin(), images.end(),
                                       [](const ImageRow& row) { return !row.input_uri.empty(); });
   const bool with_truth = std::any_of(images.begin(), images.end(),
@@ -341,9 +334,9 @@ void write_images(std::ostream& out, const CompareSummary& summary,
     if (with_truth) write_image_cell(out, row.truth_uri, "ground truth " + row.stem, "");
     for (std::size_t v = 0; v < summary.variants.size(); ++v) {
       const std::string& uri = v < row.data_uris.size() ? row.data_uris[v] : std::string();
-      const double f = frame_f(summary, v, row.stem);
+      const auto value = frame_headline(summary, v, row.stem);
       write_image_cell(out, uri, summary.variants[v].name + " " + row.folder + " " + row.stem,
-                       f >= 0.0 ? fmt::format("F {:.3f}", f) : "");
+                       value ? fmt::format("{} {:.3f}", label, *value) : "");
     }
     out << "</tr>\n";
   }
@@ -369,7 +362,7 @@ void write_compare_html(std::ostream& out, const CompareSummary& summary,
   if (!context.input.empty()) out << "; input " << xml_escape(context.input);
   out << "<br><code>" << xml_escape(context.command_line) << "</code></p>\n";
   out << "<h2>Summary</h2>\n";
-  write_headline(out, summary);
+  write_headline_html(out, summary);
   write_summary_table(out, summary, context);
   if (summary.sweep) write_sweep(out, *summary.sweep, plots);
   write_images(out, summary, images, context.images_where_they_disagree);

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <limits>
 #include <numeric>
+#include <optional>
 
 namespace facet::cli {
 namespace {
@@ -18,11 +20,17 @@ std::string params_text(const NodeSpec& node) {
   return text;
 }
 
-double value_at(const MetricSummary& metric, std::int64_t frame) {
+std::optional<double> value_at(const MetricSummary& metric, std::int64_t frame) {
   for (std::size_t i = 0; i < metric.frames.size() && i < metric.values.size(); ++i) {
     if (metric.frames[i] == frame) return metric.values[i];
   }
-  return -1.0;
+  return std::nullopt;
+}
+
+// Variant `v`'s headline metric, when the summary has one and the variant reported it.
+const MetricSummary* headline_metric(const CompareSummary& summary, std::size_t v) {
+  if (!summary.headline || v >= summary.variants.size()) return nullptr;
+  return summary.headline->of(summary.variants[v]);
 }
 
 }  // namespace
@@ -62,15 +70,15 @@ std::vector<std::string> frames_to_show(const CompareSummary& summary, std::size
   if (where_they_disagree && summary.variants.size() > 1) {
     std::vector<double> spread(frames, -1.0);
     for (std::size_t f = 0; f < frames; ++f) {
-      double lo = 2.0;
-      double hi = -1.0;
-      for (const auto& variant : summary.variants) {
-        const MetricSummary* metric = variant.find_metric("f");
-        const double value =
-            metric == nullptr ? -1.0 : value_at(*metric, static_cast<std::int64_t>(f));
-        if (value < 0.0) continue;
-        lo = std::min(lo, value);
-        hi = std::max(hi, value);
+      double lo = std::numeric_limits<double>::infinity();
+      double hi = -lo;
+      for (std::size_t v = 0; v < summary.variants.size(); ++v) {
+        const MetricSummary* metric = headline_metric(summary, v);
+        const auto value =
+            metric == nullptr ? std::nullopt : value_at(*metric, static_cast<std::int64_t>(f));
+        if (!value) continue;
+        lo = std::min(lo, *value);
+        hi = std::max(hi, *value);
       }
       if (hi >= lo) spread[f] = hi - lo;
     }
@@ -85,12 +93,13 @@ std::vector<std::string> frames_to_show(const CompareSummary& summary, std::size
   return stems;
 }
 
-double frame_f(const CompareSummary& summary, std::size_t v, const std::string& stem) {
+std::optional<double> frame_headline(const CompareSummary& summary, std::size_t v,
+                                     const std::string& stem) {
   const auto& stems = summary.frame_stems;
   const auto frame = std::find(stems.begin(), stems.end(), stem);
-  if (frame == stems.end() || v >= summary.variants.size()) return -1.0;
-  const MetricSummary* metric = summary.variants[v].find_metric("f");
-  return metric == nullptr ? -1.0 : value_at(*metric, frame - stems.begin());
+  const MetricSummary* metric = headline_metric(summary, v);
+  if (frame == stems.end() || metric == nullptr) return std::nullopt;
+  return value_at(*metric, frame - stems.begin());
 }
 
 std::string utc_now_text() {

@@ -2,6 +2,7 @@
 // What the comparison report says besides the figures: where they came from (facet version,
 // command line, input, date), what each variant changes, and which frames to show.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,14 +25,15 @@ struct ReportContext {
 // removed nodes; "the graph as written" when nothing.
 std::string describe_changes(const GraphSpec& written, const GraphSpec& variant);
 
-// The stems of the frames whose F differs most between the variants (largest spread first), when
-// they report one and there are several; otherwise the first frames run. At most `count`.
+// The stems of the frames whose headline metric (F by default) differs most between the variants
+// (largest spread first), when they report it and there are several; otherwise the first frames
+// run. At most `count`.
 std::vector<std::string> frames_to_show(const CompareSummary& summary, std::size_t count,
                                         bool where_they_disagree);
 
-// The F (eval's metric "f") that variant `v` scored on the frame with this stem, or a negative
-// number when it has none.
-double frame_f(const CompareSummary& summary, std::size_t v, const std::string& stem);
+// The headline metric's value that variant `v` reported for the frame with this stem, if any.
+std::optional<double> frame_headline(const CompareSummary& summary, std::size_t v,
+                                     const std::string& stem);
 
 // "2026-12-03 17:58 UTC", now.
 std::string utc_now_text();

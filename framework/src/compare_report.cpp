@@ -43,6 +43,21 @@ std::string number(double value) {
   return fmt::format("{:.6g}", value);
 }
 
+// "best score.f (the headline, higher is better): convex 0.959"; when the graph's headline was
+// not reported, that instead.
+void write_headline_line(std::ostream& out, const CompareSummary& summary) {
+  if (!summary.headline) return;
+  const Headline& headline = *summary.headline;
+  const auto best = headline.best(summary.variants);
+  if (!best) {
+    out << fmt::format("\nheadline {}: no variant reported it\n", headline.key());
+    return;
+  }
+  out << fmt::format("\nbest {} (the headline, {} is better): {} {:.4g}\n", headline.key(),
+                     goal_name(headline.goal), summary.variants[*best].name,
+                     headline.of(summary.variants[*best])->mean);
+}
+
 }  // namespace
 
 void write_compare_table(std::ostream& out, const CompareSummary& summary) {
@@ -116,6 +131,7 @@ void write_compare_table(std::ostream& out, const CompareSummary& summary) {
       return std::string("-");
     });
   }
+  write_headline_line(out, summary);
   if (summary.sweep) detail::write_sweep_findings(out, *summary.sweep);
 }
 
@@ -129,6 +145,21 @@ void write_compare_json(std::ostream& out, const CompareSummary& summary) {
   for (const auto& stem : summary.frame_stems)
     json.value(stem);
   json.end_array();
+  json.key("headline");
+  if (summary.headline) {
+    const Headline& headline = *summary.headline;
+    json.begin_object();
+    json.key("metric").value(headline.key());
+    json.key("better").value(goal_name(headline.goal));
+    json.key("from_graph").value(headline.from_graph);
+    json.key("reported").value(headline.reported);
+    if (const auto best = headline.best(summary.variants)) {
+      json.key("best").value(summary.variants[*best].name);
+    }
+    json.end_object();
+  } else {
+    json.null();
+  }
   if (summary.sweep) {
     json.key("sweep");
     detail::write_sweep_json(json, *summary.sweep);

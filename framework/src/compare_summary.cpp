@@ -32,7 +32,50 @@ MetricSummary summarize_metric(const std::string& node, const std::string& name,
   return summary;
 }
 
+// The graph's headline, or else the F of the first node that reports one in any variant.
+std::optional<Headline> headline_of(const GraphSpec& graph,
+                                    const std::vector<VariantSummary>& variants) {
+  std::optional<Headline> headline;
+  if (graph.headline) {
+    const HeadlineSpec& named = *graph.headline;
+    headline = Headline{named.node, named.metric, named.better, true, false, named.where};
+  } else {
+    for (const auto& variant : variants) {
+      const MetricSummary* f = variant.find_metric(kDefaultHeadlineMetric);
+      if (f == nullptr) continue;
+      headline = Headline{f->node, f->name, ScoreGoal::higher, false, false, {}};
+      break;
+    }
+    if (!headline) return std::nullopt;
+  }
+  headline->reported = std::any_of(variants.begin(), variants.end(), [&](const auto& variant) {
+    return headline->of(variant) != nullptr;
+  });
+  return headline;
+}
+
 }  // namespace
+
+std::string Headline::label() const {
+  return metric == kDefaultHeadlineMetric ? "F" : metric;
+}
+
+const MetricSummary* Headline::of(const VariantSummary& variant) const {
+  return variant.find_metric(node, metric);
+}
+
+std::optional<std::size_t> Headline::best(const std::vector<VariantSummary>& variants) const {
+  std::optional<std::size_t> best;
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    const MetricSummary* value = of(variants[v]);
+    if (value == nullptr) continue;
+    const double best_mean = best ? of(variants[*best])->mean : 0.0;
+    if (!best || (goal == ScoreGoal::lower ? value->mean < best_mean : value->mean > best_mean)) {
+      best = v;
+    }
+  }
+  return best;
+}
 
 const char* role_name(NodeRole role) {
   switch (role) {
@@ -49,6 +92,14 @@ const char* role_name(NodeRole role) {
 const MetricSummary* VariantSummary::find_metric(const std::string& metric_name) const {
   const auto it = std::find_if(metrics.begin(), metrics.end(),
                                [&](const MetricSummary& m) { return m.name == metric_name; });
+  return it == metrics.end() ? nullptr : &*it;
+}
+
+const MetricSummary* VariantSummary::find_metric(const std::string& node,
+                                                 const std::string& metric_name) const {
+  const auto it = std::find_if(metrics.begin(), metrics.end(), [&](const MetricSummary& m) {
+    return m.node == node && m.name == metric_name;
+  });
   return it == metrics.end() ? nullptr : &*it;
 }
 
@@ -116,6 +167,7 @@ CompareSummary summarize_comparison(const MergedGraph& merged, const ValidatedGr
     result.p95_ms = percentile(result.frame_ms, 95.0);
     summary.variants.push_back(std::move(result));
   }
+  summary.headline = headline_of(merged.spec, summary.variants);
   return summary;
 }
 

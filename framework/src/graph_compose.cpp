@@ -226,6 +226,7 @@ RawGraph fold(RawGraph base, RawGraph derived, const std::string& derived_file,
   }
   out.variants =
       merged_variants(out, std::move(derived.variants), derived.removed_variants, diagnostics);
+  if (derived.headline) out.headline = std::move(derived.headline);
   return out;
 }
 

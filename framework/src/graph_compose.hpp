@@ -1,8 +1,9 @@
 #pragma once
 // Graph composition: a graph file with `extends: BASE.yaml` starts from the base's params,
-// nodes, graph ports and variants, then applies its own `remove:`, `replace:` and `set:` to the
-// base's nodes and adds its own nodes, params and variants. A chain of such files is folded from
-// the last base up, so that each file edits what the files below it made.
+// nodes, graph ports, variants and headline, then applies its own `remove:`, `replace:` and
+// `set:` to the base's nodes and adds its own nodes, params and variants; its own headline, when
+// it names one, replaces the base's. A chain of such files is folded from the last base up, so
+// that each file edits what the files below it made.
 
 #include <filesystem>
 #include <functional>

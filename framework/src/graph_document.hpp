@@ -81,6 +81,7 @@ struct RawGraph {
   std::vector<RawInput> graph_outputs;  // `outputs:` name: node.port
   bool has_graph_inputs = false;        // the file has an `inputs:` key (perhaps empty)
   bool has_graph_outputs = false;
+  std::optional<HeadlineSpec> headline;  // `headline:`, its form checked; its node not yet
 
   RawNode* find_node(const std::string& id);
   const RawVariant* find_variant(const std::string& name) const;

@@ -229,6 +229,32 @@ std::vector<GraphPort> resolve_graph_ports(const std::vector<detail::RawInput>& 
   return ports;
 }
 
+// `headline:` must name a node of the graph. Its metric is checked only by a run: stages do not
+// declare the metrics they report. A node that `when:` leaves out is fine (the run then reports
+// no headline, and says so); one that a composition removed is an error, since the derived graph
+// then needs a headline of its own.
+std::optional<HeadlineSpec> check_headline(const RawGraph& raw, Diagnostics& diagnostics) {
+  if (!raw.headline) return std::nullopt;
+  const HeadlineSpec& headline = *raw.headline;
+  const auto named = [&headline](const auto& node) { return node.id == headline.node; };
+  if (std::any_of(raw.nodes.begin(), raw.nodes.end(), named)) return headline;
+  const auto removed = std::find_if(raw.removed.begin(), raw.removed.end(), named);
+  if (removed != raw.removed.end()) {
+    // Inherited from the base: the graph that removed the node names another headline.
+    const bool inherited = headline.where.file != removed->where.file;
+    diagnostics.error(headline.where,
+                      "node " + detail::in_quotes(headline.node) +
+                          " in 'headline' is left out: " + removed->reason +
+                          (inherited ? "; name another in that graph's 'headline:'" : ""));
+    diagnostics.note(removed->where, removed->note);
+  } else {
+    diagnostics.error(headline.where,
+                      "unknown node " + detail::in_quotes(headline.node) + " in 'headline'" +
+                          detail::suggestion_suffix(headline.node, raw.node_ids(), ""));
+  }
+  return std::nullopt;
+}
+
 // The YAML text of a graph file checked and read into its structure; nothing when it is not a
 // graph at all (reported).
 std::optional<RawGraph> read_document(const std::string& yaml, const std::string& file,
@@ -348,6 +374,7 @@ GraphSpec load_graph_text(const std::string& yaml, const std::filesystem::path& 
   }
   graph.inputs = resolve_graph_ports(raw.graph_inputs, "input", substitution, diagnostics);
   graph.outputs = resolve_graph_ports(raw.graph_outputs, "output", substitution, diagnostics);
+  graph.headline = check_headline(raw, diagnostics);
   return graph;
 }
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "facet/framework/score_goal.hpp"
 #include "graph_document.hpp"
 #include "yaml_checks.hpp"
 
@@ -9,12 +10,15 @@ namespace {
 constexpr const char* kFormatVersion = "1";
 
 const std::vector<std::string> kTopLevelKeys = {
-    "facet",  "name",    "description", "extends", "remove",  "replace",  "set",
-    "params", "plugins", "nodes",       "inputs",  "outputs", "variants", "remove_variants"};
+    "facet",   "name",    "description", "extends",  "remove",
+    "replace", "set",     "params",      "plugins",  "nodes",
+    "inputs",  "outputs", "variants",    "headline", "remove_variants"};
 const std::vector<std::string> kNodeKeys = {"stage", "in", "params", "when"};
 const std::vector<std::string> kReplaceKeys = {"stage", "in", "params"};
 const std::vector<std::string> kVariantKeys = {"extends", "replace", "set"};
 const std::vector<std::string> kPluginsKeys = {"paths"};
+const std::vector<std::string> kHeadlineKeys = {"metric", "better"};
+const std::vector<std::string> kGoalNames = {"higher", "lower"};
 
 // Reads one document; holds the file name and the diagnostics so that each step stays short.
 class DocumentReader {
@@ -67,6 +71,8 @@ class DocumentReader {
         edits.push_back(entry);
       } else if (entry.key == "variants") {
         graph.variants = variants(entry);
+      } else if (entry.key == "headline") {
+        graph.headline = headline(entry);
       } else {
         report_unknown_key(entry, "the graph", kTopLevelKeys, diagnostics_);
       }
@@ -173,6 +179,66 @@ class DocumentReader {
       out.push_back(std::move(port));
     }
     return out;
+  }
+
+  // `headline: node.metric`, or `headline: {metric: node.metric, better: higher}`. Which way is
+  // better may be left out for the metrics whose way goal_of_metric knows (F, times, ...).
+  std::optional<HeadlineSpec> headline(const MapEntry& entry) {
+    std::optional<RawText> metric;
+    std::optional<RawText> better;
+    if (entry.value.IsMap()) {
+      bool has_metric = false;
+      for (const auto& item : map_entries(entry.value, file_, diagnostics_)) {
+        if (item.key == "metric") {
+          has_metric = true;
+          metric = scalar(item, "'metric' of 'headline'");
+        } else if (item.key == "better") {
+          better = scalar(item, "'better' of 'headline'");
+        } else {
+          report_unknown_key(item, "'headline'", kHeadlineKeys, diagnostics_);
+        }
+      }
+      if (!has_metric) {
+        diagnostics_.error(entry.key_where,
+                           "'headline' has no 'metric' (the node and its metric, e.g. score.f)");
+      }
+    } else if (entry.value.IsScalar()) {
+      metric = RawText{entry.value.Scalar(), value_where(entry)};
+    } else {
+      diagnostics_.error(value_where(entry),
+                         "'headline' must be 'node.metric' or a map {metric: node.metric, better: "
+                         "higher or lower}, got " +
+                             std::string(kind_name(entry.value)));
+    }
+    if (!metric) return std::nullopt;
+    const auto target = split_node_param(metric->text);
+    if (!target) {
+      diagnostics_.error(metric->where, "malformed headline " + in_quotes(metric->text) +
+                                            ": expected 'node.metric', e.g. 'score.f'");
+      return std::nullopt;
+    }
+    HeadlineSpec spec{target->first, target->second, goal_of_metric(target->second), metric->where};
+    if (better) {
+      if (better->text == "higher") {
+        spec.better = ScoreGoal::higher;
+      } else if (better->text == "lower") {
+        spec.better = ScoreGoal::lower;
+      } else {
+        diagnostics_.error(better->where,
+                           "'better' of 'headline' must be 'higher' or 'lower', got " +
+                               in_quotes(better->text) +
+                               suggestion_suffix(better->text, kGoalNames, ""));
+        return std::nullopt;
+      }
+    } else if (spec.better == ScoreGoal::none) {
+      diagnostics_.error(metric->where,
+                         "headline " + in_quotes(metric->text) +
+                             ": the metric describes the scene or the run, neither way is better "
+                             "by default; say which with 'headline: {metric: " +
+                             metric->text + ", better: higher}' (or lower)");
+      return std::nullopt;
+    }
+    return spec;
   }
 
   std::vector<RawNode> nodes(const MapEntry& entry) {

@@ -6,20 +6,10 @@
 #include <cmath>
 #include <string>
 
+#include "facet/framework/compare_summary.hpp"
+
 namespace facet::detail {
 namespace {
-
-const char* goal_name(ScoreGoal goal) {
-  switch (goal) {
-    case ScoreGoal::higher:
-      return "higher";
-    case ScoreGoal::lower:
-      return "lower";
-    case ScoreGoal::none:
-      break;
-  }
-  return "none";
-}
 
 void write_axis_value(JsonWriter& json, const SweepAxis& axis, std::size_t index) {
   const double value = axis.values[index];
@@ -74,7 +64,11 @@ void write_sweep_findings(std::ostream& out, const SweepSummary& sweep) {
                        score.goal == ScoreGoal::lower ? "  (lower is better)" : "");
   }
   if (sweep.headline.empty()) {
-    out << "\nno plateau: no stage reports the metric '" << kHeadlineMetric << "'\n";
+    out << "\nno plateau: no stage reports the metric '" << kDefaultHeadlineMetric << "'\n";
+    return;
+  }
+  if (sweep.find_score(sweep.headline) == nullptr) {
+    out << "\nno plateau: no point reported the headline metric '" << sweep.headline << "'\n";
     return;
   }
   for (const auto& plateau : sweep.plateaus) {

@@ -18,12 +18,14 @@ constexpr const char* kEvalFamily = "eval.";
 // as within the tolerance, as it does in decimal.
 constexpr double kTolerance = 1e-9;
 
-// The scores the team reads first lead the list (and the plots), in this order.
-int headline_rank(const std::string& metric) {
+// The graph's headline leads the list (and the plots), then the scores the team reads first, in
+// this order.
+int headline_rank(const SweepScore& score, const std::string& headline_key) {
   static constexpr const char* kFirst[] = {"f", "precision", "recall", "objects_f75_ratio",
                                            "mean_iou"};
+  if (score.key == headline_key) return -1;
   for (int i = 0; i < static_cast<int>(std::size(kFirst)); ++i) {
-    if (metric == kFirst[i]) return i;
+    if (score.metric == kFirst[i]) return i;
   }
   return static_cast<int>(std::size(kFirst));
 }
@@ -42,11 +44,14 @@ std::optional<std::size_t> best_of(const std::vector<double>& values, ScoreGoal 
 }
 
 // The widest plateau of `score` along axis `axis`: over every line of the grid (the other axes
-// fixed), the widest run of points within `within` of the score's best over the whole grid.
+// fixed), the widest run of points within `within` of the score's best over the whole grid (above
+// it for a score that is better low).
 std::optional<SweepPlateau> plateau_along(const SweepSummary& sweep, const SweepScore& score,
                                           std::size_t axis) {
   if (!score.best) return std::nullopt;
   const double best = score.values[*score.best];
+  // A score better low is searched as its negative: the run then is of values >= -(best + within).
+  const double sign = score.goal == ScoreGoal::lower ? -1.0 : 1.0;
   // Lines: points that agree on every other axis, ordered along `axis`.
   std::map<std::vector<std::size_t>, std::vector<std::size_t>> lines;
   for (std::size_t p = 0; p < sweep.points.size(); ++p) {
@@ -63,9 +68,9 @@ std::optional<SweepPlateau> plateau_along(const SweepSummary& sweep, const Sweep
     std::vector<double> y;
     for (const std::size_t p : line) {
       x.push_back(sweep.axes[axis].values[sweep.points[p].index[axis]]);
-      y.push_back(score.values[p]);
+      y.push_back(sign * score.values[p]);
     }
-    const auto run = widest_run_at_least(x, y, best - sweep.within - kTolerance);
+    const auto run = widest_run_at_least(x, y, sign * best - sweep.within - kTolerance);
     if (!run) continue;
     const double width = x[run->last] - x[run->first];
     const std::size_t points = run->last - run->first + 1;
@@ -94,16 +99,6 @@ std::optional<SweepPlateau> plateau_along(const SweepSummary& sweep, const Sweep
 }
 
 }  // namespace
-
-ScoreGoal goal_of_metric(const std::string& metric_name) {
-  for (const char* lower : {"over_segmented", "under_segmented", "merged_objects"}) {
-    if (metric_name == lower) return ScoreGoal::lower;
-  }
-  for (const char* none : {"truth_objects", "segments", "scored"}) {
-    if (metric_name == none) return ScoreGoal::none;
-  }
-  return ScoreGoal::higher;
-}
 
 const SweepScore* SweepSummary::find_score(const std::string& key) const {
   const auto it =
@@ -143,9 +138,12 @@ SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxi
   sweep.within = within;
   const std::size_t count = std::min(sweep.points.size(), summary.variants.size());
 
-  // The scores are what the eval stages report; the other stages' metrics (valid pixels, patch
-  // counts, ...) describe the work, not its quality. A graph without an eval stage has only those,
-  // so then they are all plotted.
+  // The graph's headline (docs/graph-format.md), else the first node's F, as
+  // CompareSummary::headline takes it.
+  const std::string headline_key = summary.headline ? summary.headline->key() : std::string();
+  // The scores are what the eval stages report, and the headline; the other stages' metrics
+  // (valid pixels, patch counts, ...) describe the work, not its quality. A graph without an eval
+  // stage has only those, so then they are all plotted.
   std::set<std::string> eval_nodes;
   for (std::size_t p = 0; p < count; ++p) {
     for (const auto& stage : summary.variants[p].stages) {
@@ -155,10 +153,14 @@ SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxi
   // Every such metric any point reported, first seen first; the mean over frames at each point.
   for (std::size_t p = 0; p < count; ++p) {
     for (const auto& metric : summary.variants[p].metrics) {
-      if (!eval_nodes.empty() && eval_nodes.count(metric.node) == 0) continue;
       const std::string key = metric.node + "." + metric.name;
+      if (!eval_nodes.empty() && eval_nodes.count(metric.node) == 0 && key != headline_key) {
+        continue;
+      }
       if (sweep.find_score(key) != nullptr) continue;
-      SweepScore score{key, key, metric.name, goal_of_metric(metric.name), {}, {}};
+      const ScoreGoal goal =
+          key == headline_key ? summary.headline->goal : goal_of_metric(metric.name);
+      SweepScore score{key, key, metric.name, goal, {}, {}};
       for (std::size_t q = 0; q < sweep.points.size(); ++q) {
         double value = kNone;
         if (q < count) {
@@ -172,8 +174,8 @@ SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxi
     }
   }
   std::stable_sort(sweep.scores.begin(), sweep.scores.end(),
-                   [](const SweepScore& a, const SweepScore& b) {
-                     return headline_rank(a.metric) < headline_rank(b.metric);
+                   [&](const SweepScore& a, const SweepScore& b) {
+                     return headline_rank(a, headline_key) < headline_rank(b, headline_key);
                    });
   SweepScore time{"frame_ms", "frame median ms", "", ScoreGoal::lower, {}, {}};
   for (std::size_t q = 0; q < sweep.points.size(); ++q)
@@ -182,10 +184,12 @@ SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxi
   for (auto& score : sweep.scores)
     score.best = best_of(score.values, score.goal);
 
-  // The headline is the first node's F, as CompareSummary::find_metric takes it.
+  // Without a CompareSummary::headline (a summary made by hand), the first node's F.
   const auto headline =
-      std::find_if(sweep.scores.begin(), sweep.scores.end(),
-                   [](const SweepScore& s) { return s.metric == kHeadlineMetric; });
+      std::find_if(sweep.scores.begin(), sweep.scores.end(), [&](const SweepScore& s) {
+        return summary.headline ? s.key == headline_key : s.metric == kDefaultHeadlineMetric;
+      });
+  sweep.headline = headline_key;
   if (headline != sweep.scores.end()) {
     sweep.headline = headline->key;
     for (std::size_t a = 0; a < sweep.axes.size(); ++a) {

@@ -47,6 +47,11 @@ inline CliResult run_cli(const std::string& arguments, const std::string& enviro
   return result;
 }
 
+// The same, run from folder `dir`: relative paths in `arguments` are relative to it.
+inline CliResult run_cli_in(const std::filesystem::path& dir, const std::string& arguments) {
+  return run_cli(arguments, "cd " + shell_quote(dir.string()) + " &&");
+}
+
 inline std::string read_file(const std::filesystem::path& file) {
   std::ifstream in(file);
   std::stringstream text;

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <regex>
 
 #include "cli_runner.hpp"
+#include "headless_chromium.hpp"
 #include "mini_xml.hpp"
 
 namespace facet::test {
@@ -170,19 +170,10 @@ TEST_F(CompareSweep, ReportEmbedsThePlotAndLoadsNothing) {
 // The browser lays the plot's lines out as SVG: each has a width on the page.
 TEST_F(CompareSweep, ReportPlotRendersInHeadlessChromium) {
   ASSERT_EQ(result_->exit_code, 0) << result_->out;
-  if (std::system("command -v chromium > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "chromium is not installed (Debian package 'chromium')";
-  }
+  if (!have_chromium()) GTEST_SKIP() << "chromium is not installed (Debian package 'chromium')";
   TempDir profile("facet-chromium");
   const fs::path dom_file = profile / "dom.html";
-  const std::string command =
-      "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-      "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" +
-      shell_quote((profile / "user").string()) + " --virtual-time-budget=5000 --dump-dom " +
-      shell_quote("file://" + (out() / "report.html").string()) + " > " +
-      shell_quote(dom_file.string()) + " 2> /dev/null";
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  ASSERT_EQ(load_in_headless_chromium(out() / "report.html", profile / "user", dom_file), 0);
   const std::string dom = read_file(dom_file);
   // Five panels of one line each.
   EXPECT_NE(dom.find("data-sweep-lines=\"5\""), std::string::npos) << dom.substr(0, 600);

@@ -106,6 +106,61 @@ TEST_F(CompareSummaryTest, MetricsBelongToTheVariantThatReportedThem) {
   EXPECT_EQ(summary.variants[0].find_metric("missing"), nullptr);
 }
 
+TEST_F(CompareSummaryTest, WithoutAGraphHeadlineTheReportsLeadWithF) {
+  const CompareSummary summary = summarize_comparison(merged_, graph_, stats_, 1);
+  ASSERT_TRUE(summary.headline.has_value());
+  EXPECT_EQ(summary.headline->key(), "sink.f");
+  EXPECT_EQ(summary.headline->label(), "F");
+  EXPECT_FALSE(summary.headline->from_graph);
+  EXPECT_TRUE(summary.headline->reported);
+  EXPECT_EQ(summary.headline->best(summary.variants), std::optional<std::size_t>(0));
+  std::ostringstream table;
+  write_compare_table(table, summary);
+  EXPECT_NE(table.str().find("\nbest sink.f (the headline, higher is better): a 0.7\n"),
+            std::string::npos)
+      << table.str();
+  // Nothing reports an F: no headline at all.
+  stats_.nodes[4].metrics.clear();
+  stats_.nodes[5].metrics.clear();
+  EXPECT_FALSE(summarize_comparison(merged_, graph_, stats_, 1).headline.has_value());
+}
+
+TEST_F(CompareSummaryTest, TheGraphsHeadlineAndItsWayDecideTheBest) {
+  stats_.nodes[4].metrics["fit_ms"] = {3.0, 3.0};
+  stats_.nodes[5].metrics["fit_ms"] = {2.0, 1.0};
+  merged_.spec.headline = HeadlineSpec{"sink", "fit_ms", ScoreGoal::lower, {"g.yaml", 9, 11}};
+  const CompareSummary summary = summarize_comparison(merged_, graph_, stats_, 1);
+  ASSERT_TRUE(summary.headline.has_value());
+  EXPECT_EQ(summary.headline->key(), "sink.fit_ms");
+  EXPECT_EQ(summary.headline->label(), "fit_ms");
+  EXPECT_TRUE(summary.headline->from_graph);
+  EXPECT_TRUE(summary.headline->reported);
+  // Lower is better: b (1.5 ms) beats a (3 ms), although a has the better F.
+  EXPECT_EQ(summary.headline->best(summary.variants), std::optional<std::size_t>(1));
+  std::ostringstream json;
+  write_compare_json(json, summary);
+  EXPECT_NE(json.str().find(R"("headline": {
+    "metric": "sink.fit_ms",
+    "better": "lower",
+    "from_graph": true,
+    "reported": true,
+    "best": "b"
+  })"),
+            std::string::npos)
+      << json.str().substr(0, 600);
+
+  // Named but reported by no variant: kept, and said to be missing; no best.
+  merged_.spec.headline->metric = "fit_sm";
+  const CompareSummary missing = summarize_comparison(merged_, graph_, stats_, 1);
+  ASSERT_TRUE(missing.headline.has_value());
+  EXPECT_FALSE(missing.headline->reported);
+  EXPECT_FALSE(missing.headline->best(missing.variants).has_value());
+  std::ostringstream table;
+  write_compare_table(table, missing);
+  EXPECT_NE(table.str().find("\nheadline sink.fit_sm: no variant reported it\n"), std::string::npos)
+      << table.str();
+}
+
 TEST_F(CompareSummaryTest, WarmupLongerThanTheRunLeavesNoTimedFrame) {
   const CompareSummary summary = summarize_comparison(merged_, graph_, stats_, 10);
   EXPECT_EQ(summary.warmup, 3);

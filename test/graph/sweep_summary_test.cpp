@@ -293,6 +293,69 @@ TEST(SweepGridSummary, ScoresAreTheEvalStagesMetricsWhenThereAreAny) {
   EXPECT_NE(plain.find_score("patches.patches"), nullptr);
 }
 
+TEST(SweepGridSummary, TheGraphsHeadlineLeadsAndAHeadlineBetterLowHasItsPlateauAbove) {
+  const std::vector<SweepAxis> axes = {axis_of("edges.threshold=0.80:0.90:0.01")};
+  const auto points = expand_sweep_grid(axes);
+  CompareSummary summary = comparison(points, kF);
+  // over_segmented along the points: best 3 at 0.82 and 0.85; within 1 of it (<= 4): 0.81 ..
+  // 0.83 and 0.85 alone.
+  const std::vector<double> over_segmented = {5, 4, 3, 3.5, 5, 3, 5, 5, 5, 5, 5};
+  for (std::size_t p = 0; p < points.size(); ++p)
+    summary.variants[p].metrics[1].mean = over_segmented[p];
+  summary.headline = Headline{"score", "over_segmented", ScoreGoal::lower, true, true, {}};
+  const SweepSummary sweep = summarize_sweep(summary, axes, points, "", 1.0);
+  EXPECT_EQ(sweep.headline, "score.over_segmented");
+  EXPECT_EQ(sweep.scores.front().key, "score.over_segmented");
+  EXPECT_EQ(sweep.scores[1].key, "score.f");
+  ASSERT_EQ(sweep.plateaus.size(), 1u);
+  EXPECT_EQ(sweep.plateaus.front().score, "score.over_segmented");
+  EXPECT_DOUBLE_EQ(sweep.plateaus.front().best, 3.0);
+  EXPECT_DOUBLE_EQ(sweep.plateaus.front().from, 0.81);
+  EXPECT_DOUBLE_EQ(sweep.plateaus.front().to, 0.83);
+  EXPECT_EQ(sweep.plateaus.front().points, 3u);
+}
+
+TEST(SweepGridSummary, AHeadlineNoPointReportedHasNoPlateauAndSaysSo) {
+  const std::vector<SweepAxis> axes = {axis_of("a.x=1:3:1")};
+  const auto points = expand_sweep_grid(axes);
+  CompareSummary summary = comparison(points, {0.5, 0.6, 0.7});
+  summary.headline = Headline{"score", "precison", ScoreGoal::higher, true, false, {}};
+  summary.sweep = summarize_sweep(summary, axes, points, "", 0.01);
+  EXPECT_EQ(summary.sweep->headline, "score.precison");
+  EXPECT_EQ(summary.sweep->find_score("score.precison"), nullptr);
+  EXPECT_TRUE(summary.sweep->plateaus.empty());
+  std::ostringstream out;
+  write_compare_table(out, summary);
+  EXPECT_NE(out.str().find("no plateau: no point reported the headline metric 'score.precison'"),
+            std::string::npos)
+      << out.str();
+}
+
+TEST(SweepGridSummary, AHeadlineOfAStageOutsideEvalIsAScoreToo) {
+  const std::vector<SweepAxis> axes = {axis_of("a.x=1:2:1")};
+  const auto points = expand_sweep_grid(axes);
+  CompareSummary summary = comparison(points, {0.5, 0.6});
+  for (auto& variant : summary.variants) {
+    variant.stages.push_back({"score", "score@x", "eval.groundtruth"});
+    variant.metrics.push_back({"shapes", "fit_ms", 4, 2.0, 2.0, 2.0, 2.0});
+  }
+  summary.headline = Headline{"shapes", "fit_ms", ScoreGoal::lower, true, true, {}};
+  const SweepSummary sweep = summarize_sweep(summary, axes, points, "", 0.01);
+  ASSERT_NE(sweep.find_score("shapes.fit_ms"), nullptr);
+  EXPECT_EQ(sweep.find_score("shapes.fit_ms")->goal, ScoreGoal::lower);
+  EXPECT_EQ(sweep.scores.front().key, "shapes.fit_ms");
+}
+
+TEST(ScoreGoalOfAMetric, TimesAndSplitsAreBetterLowSceneCountsHaveNoBest) {
+  EXPECT_EQ(goal_of_metric("f"), ScoreGoal::higher);
+  EXPECT_EQ(goal_of_metric("fit_ms"), ScoreGoal::lower);
+  EXPECT_EQ(goal_of_metric("latency_ms"), ScoreGoal::lower);
+  EXPECT_EQ(goal_of_metric("over_segmented"), ScoreGoal::lower);
+  EXPECT_EQ(goal_of_metric("segments"), ScoreGoal::none);
+  EXPECT_EQ(goal_of_metric("msec"), ScoreGoal::higher);
+  EXPECT_STREQ(goal_name(ScoreGoal::lower), "lower");
+}
+
 TEST(WidestRun, KnownValues) {
   const std::vector<double> x = {0, 1, 2, 3, 4, 5, 6};
   EXPECT_FALSE(widest_run_at_least(x, {0, 0, 0, 0, 0, 0, 0}, 1.0).has_value());

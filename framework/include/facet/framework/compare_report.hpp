@@ -9,11 +9,14 @@ namespace facet {
 
 // Per variant the frame time (median, p95); then one row per processing stage with each
 // variant's median (shared stages marked *), then one row per reported metric with each
-// variant's mean. For a sweep, one row per swept parameter first, and after the table the best
-// point of each score and the plateau of the headline score.
+// variant's mean, then the best variant by the headline metric. For a sweep, one row per swept
+// parameter first, and after the table the best point of each score and the plateau of the
+// headline score.
 void write_compare_table(std::ostream& out, const CompareSummary& summary);
 
-// {"graph": ..., "frames": n, "warmup": n,
+// {"graph": ..., "frames": n, "warmup": n, "frame_stems": [...],
+//  "headline": {"metric": "score.f", "better": "higher", "from_graph": b, "reported": b,
+//               "best": variant (when reported)} or null,
 //  "variants": [{"name": ..., "median_ms": x, "p95_ms": x, "frame_ms": [...],
 //                "stages": [{"node", "merged_id", "stage", "role", "shared", "calls",
 //                            "median_ms", "p95_ms"}],

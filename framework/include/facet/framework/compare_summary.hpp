@@ -11,6 +11,7 @@
 
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_merge.hpp"
+#include "facet/framework/score_goal.hpp"
 #include "facet/framework/sweep_summary.hpp"
 #include "facet/framework/validated_graph.hpp"
 
@@ -54,6 +55,30 @@ struct VariantSummary {
   // The summary of metric `metric_name` from the first of the variant's nodes that reports it
   // (in execution order), or nullptr.
   const MetricSummary* find_metric(const std::string& metric_name) const;
+  // The same from node `node` (its id in the graph file), or nullptr.
+  const MetricSummary* find_metric(const std::string& node, const std::string& metric_name) const;
+};
+
+// The metric reports lead with when the graph names none: eval.groundtruth's F-measure.
+inline constexpr const char* kDefaultHeadlineMetric = "f";
+
+// The metric the reports lead with: the graph's `headline:`, or by default the F ("f") of the
+// first node that reports one.
+struct Headline {
+  std::string node;  // id in the graph file
+  std::string metric;
+  ScoreGoal goal = ScoreGoal::higher;  // higher or lower
+  bool from_graph = false;             // named by the graph's `headline:`
+  bool reported = false;               // some variant reported it
+  SourceLocation where;                // of the graph's `headline:`, when from_graph
+
+  std::string key() const { return node + "." + metric; }
+  // How reports name it: "F" for F, else the metric's name.
+  std::string label() const;
+  // The variant's value (mean over frames), or nullptr when it reported none.
+  const MetricSummary* of(const VariantSummary& variant) const;
+  // The variant whose value is best by `goal` (the first of equals), or nothing.
+  std::optional<std::size_t> best(const std::vector<VariantSummary>& variants) const;
 };
 
 struct CompareSummary {
@@ -62,13 +87,15 @@ struct CompareSummary {
   std::int64_t warmup = 0;               // leading frames left out of the timing
   std::vector<std::string> frame_stems;  // of each frame run, from its source ("" when none)
   std::vector<VariantSummary> variants;
+  // None when the graph names no headline and no variant reports an F.
+  std::optional<Headline> headline;
   // Set when the variants are the points of a parameter sweep (one per point, in its order).
   std::optional<SweepSummary> sweep;
 };
 
 // `stats` must come from running `graph`, validated from `merged.spec`, with
 // RunOptions::record_calls set (the calls tell each sample's frame). Frames below `warmup` are
-// left out of every time; metrics keep every frame.
+// left out of every time; metrics keep every frame. The headline is `merged.spec.headline`.
 CompareSummary summarize_comparison(const MergedGraph& merged, const ValidatedGraph& graph,
                                     const RunStats& stats, std::int64_t warmup);
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "facet/framework/diagnostics.hpp"
+#include "facet/framework/score_goal.hpp"
 
 namespace facet {
 
@@ -68,6 +69,17 @@ struct LeftOutNode {
   std::string note;      // said there: how to have the node back
 };
 
+// `headline: score.f` or `headline: {metric: score.f, better: higher}`: the metric that reports of
+// the graph lead with (facet compare's "best" variant), and which way it is better.
+struct HeadlineSpec {
+  std::string node;                      // id of the node that reports it
+  std::string metric;                    // the metric's name, as the node's stage reports it
+  ScoreGoal better = ScoreGoal::higher;  // higher or lower, never none
+  SourceLocation where;                  // of the value "score.f"
+
+  std::string key() const { return node + "." + metric; }
+};
+
 struct GraphSpec {
   std::filesystem::path file;                 // as given; "<string>" for graphs parsed from memory
   std::string name;                           // `name:`, or the file's stem when absent
@@ -81,6 +93,7 @@ struct GraphSpec {
   std::vector<LeftOutNode> left_out;                // `when:` or `remove:` took them out
   std::vector<GraphPort> inputs;                    // `inputs:`, in file order
   std::vector<GraphPort> outputs;                   // `outputs:`, in file order
+  std::optional<HeadlineSpec> headline;             // `headline:`, when the graph names one
 
   const NodeSpec* find_node(const std::string& id) const;
 };

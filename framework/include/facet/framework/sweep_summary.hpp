@@ -1,8 +1,9 @@
 #pragma once
 // What a parameter sweep found: every score (each reported metric's mean and the frame time) at
-// every point of the grid, the best point of each, and for the headline score (F) the widest
-// range of each swept parameter over which it stays near its best — a default chosen there sits
-// on a plateau, not on a peak that the next recording may not share.
+// every point of the grid, the best point of each, and for the headline score (the graph's
+// `headline:`, F by default) the widest range of each swept parameter over which it stays near
+// its best — a default chosen there sits on a plateau, not on a peak that the next recording may
+// not share.
 
 #include <cstddef>
 #include <optional>
@@ -10,18 +11,12 @@
 #include <utility>
 #include <vector>
 
+#include "facet/framework/score_goal.hpp"
 #include "facet/framework/sweep_spec.hpp"
 
 namespace facet {
 
 struct CompareSummary;
-
-// Which way a score is better. Times and the over-/under-segmentation counts are better low;
-// counts that describe the scene rather than the result (truth objects, segments, scored frames)
-// have no best; every other metric is taken as better high.
-enum class ScoreGoal { higher, lower, none };
-
-ScoreGoal goal_of_metric(const std::string& metric_name);
 
 struct SweepScore {
   std::string key;     // "score.f" (node.metric), or "frame_ms" for the time per frame
@@ -51,18 +46,18 @@ struct SweepSummary {
   std::vector<SweepAxis> axes;
   std::vector<SweepPoint> points;  // in the order of CompareSummary::variants
   std::vector<SweepScore> scores;  // headline scores first, the frame time last
-  std::string headline;            // key of the score the plateau is computed for, or empty
+  // Key of the score the plateau is computed for; empty when there is none (no F and no
+  // `headline:`). When no point reported it, find_score(headline) is nullptr.
+  std::string headline;
   double within = 0.01;
   std::vector<SweepPlateau> plateaus;  // one per axis, when the headline score has values
 
   const SweepScore* find_score(const std::string& key) const;
 };
 
-// The metric whose plateau is reported: eval.groundtruth's F-measure.
-inline constexpr const char* kHeadlineMetric = "f";
-
 // `summary` is the comparison of `points` (one variant per point, in that order). The scores are
-// the metrics of the eval.* stages (every metric when the graph has none), then the frame time.
+// the metrics of the eval.* stages (every metric when the graph has none) and the summary's
+// headline, which leads them, then the frame time. The plateau is the headline's.
 SweepSummary summarize_sweep(const CompareSummary& summary, std::vector<SweepAxis> axes,
                              std::vector<SweepPoint> points, std::string variant, double within);
 
