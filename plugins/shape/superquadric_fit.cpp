@@ -1,6 +1,5 @@
 #include "shape/superquadric_fit.hpp"
 
-#include <Eigen/Cholesky>
 #include <cmath>
 #include <random>
 
@@ -12,7 +11,7 @@ namespace {
 using ParamMatrix = Eigen::Matrix<double, kSuperquadricParams, kSuperquadricParams>;
 
 // Normal equations of one linearisation: H = JᵀJ, g = Jᵀr, cost = ½ rᵀr.
-struct Linearisation {
+struct FitLinearisation {
   ParamMatrix hessian = ParamMatrix::Zero();
   ParamVector gradient = ParamVector::Zero();
   double cost = 0.0;
@@ -39,9 +38,23 @@ struct Workspace {
   Eigen::VectorXd residuals;
 };
 
-Linearisation linearise(const SuperquadricState& state, const std::vector<Eigen::Vector3d>& points,
-                        const Priors& priors, Workspace& work) {
-  Linearisation out;
+// The fit as a least-squares problem for algo::LevenbergMarquardt.
+struct SuperquadricProblem {
+  using State = SuperquadricState;
+  using Linearisation = FitLinearisation;
+
+  const std::vector<Eigen::Vector3d>& points;
+  Priors priors;
+  Workspace work;
+
+  FitLinearisation linearise(const SuperquadricState& state);
+  SuperquadricState moved(const SuperquadricState& state, const ParamVector& step) const {
+    return state.moved(step);
+  }
+};
+
+FitLinearisation SuperquadricProblem::linearise(const SuperquadricState& state) {
+  FitLinearisation out;
   const auto count = static_cast<Eigen::Index>(points.size());
   work.jacobian.resize(count, kSuperquadricParams);
   work.residuals.resize(count);
@@ -122,32 +135,10 @@ SuperquadricFit fit_superquadric(const std::vector<Eigen::Vector3d>& points_m,
   priors.contact_weight = options.support_weight * all_points;
   priors.initial_log_size = state.log_size;
   priors.size_weight_m = options.size_prior_weight * all_points * state.size_m().mean();
-  Workspace work;
-  Linearisation current = linearise(state, points, priors, work);
-  double damping = 1e-3;
-  for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
-    fit.iterations = iteration + 1;
-    // Marquardt's scaling: damp each parameter by its own curvature, so metres, log sizes and
-    // radians need no common unit.
-    ParamMatrix system = current.hessian;
-    system.diagonal() +=
-        damping * current.hessian.diagonal() +
-        ParamVector::Constant(1e-12 + 1e-9 * current.hessian.diagonal().maxCoeff());
-    const ParamVector step = system.ldlt().solve(-current.gradient);
-    if (!step.allFinite()) break;
-    const SuperquadricState candidate = state.moved(step);
-    Linearisation next = linearise(candidate, points, priors, work);
-    if (std::isfinite(next.cost) && next.cost < current.cost) {
-      const double gain = (current.cost - next.cost) / std::max(current.cost, 1e-300);
-      state = candidate;
-      current = std::move(next);
-      damping = std::max(damping / 3.0, 1e-9);
-      if (gain < 1e-5 || step.norm() < 1e-7) break;
-    } else {
-      damping *= 4.0;
-      if (damping > 1e8) break;
-    }
-  }
+  SuperquadricProblem problem{points, priors, Workspace{}};
+  FitLinearisation current = problem.linearise(state);
+  fit.summary = algo::LevenbergMarquardt<kSuperquadricParams>(options.solver)
+                    .minimise(problem, state, current);
   fit.superquadric = state.to_superquadric();
   fit.superquadric.residual =
       std::sqrt(current.point_sum_sq_m2 / static_cast<double>(points.size()));

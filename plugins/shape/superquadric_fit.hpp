@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "facet/algo/levenberg_marquardt.hpp"
 #include "facet/types/geometry.hpp"
 
 namespace facet::shape {
@@ -14,15 +15,15 @@ namespace facet::shape {
 struct SuperquadricFitOptions {
   int max_points = 200;            // random subsample of the object's points used by the fit
   std::uint64_t seed = 1;          // subsample seed (mixed with the object id by the caller)
-  int max_iterations = 25;         // LM iterations (accepted or rejected steps)
+  algo::SolverOptions solver;      // iterations, tolerances and damping of the minimisation
   double support_weight = 1.0;     // contact term weight, relative to all points together
   double size_prior_weight = 0.1;  // pull of the log sizes towards the initial box (see .cpp)
   double initial_epsilon = 0.5;
 };
 
 struct SuperquadricFit {
-  Superquadric superquadric;  // valid = false when there were too few points
-  int iterations = 0;
+  Superquadric superquadric;    // valid = false when there were too few points
+  algo::SolverSummary summary;  // costs, iterations and why the minimisation stopped
   int points_used = 0;
 };
 

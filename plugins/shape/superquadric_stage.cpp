@@ -13,6 +13,33 @@ std::uint64_t object_seed(std::uint64_t seed, std::int32_t id) {
   return seed ^ (static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ULL);
 }
 
+// How the frame's fits ended, so that a tolerance or an iteration limit that cuts fits short
+// shows in `facet run --json` and in comparisons. An object with too few points has no fit and
+// no summary to count (0 iterations).
+void report_solver_stops(ProcessContext& ctx, const std::vector<algo::SolverSummary>& summaries) {
+  int converged = 0;
+  int at_limit = 0;
+  int stalled = 0;
+  int run = 0;
+  std::int64_t iterations = 0;
+  for (const algo::SolverSummary& summary : summaries) {
+    if (summary.iterations == 0) continue;
+    ++run;
+    iterations += summary.iterations;
+    if (summary.converged()) {
+      ++converged;
+    } else if (summary.stop == algo::SolverStop::max_iterations) {
+      ++at_limit;
+    } else {
+      ++stalled;
+    }
+  }
+  ctx.metric("fits_converged", converged);
+  ctx.metric("fits_at_iteration_limit", at_limit);
+  ctx.metric("fits_stalled", stalled);
+  ctx.metric("mean_iterations", run > 0 ? static_cast<double>(iterations) / run : 0.0);
+}
+
 }  // namespace
 
 StageSpec SuperquadricStage::spec() {
@@ -26,7 +53,10 @@ StageSpec SuperquadricStage::spec() {
       "superquadric's lowest point onto the plane; without one, the PCA box grown away from the "
       "camera (extend_without_plane). superquadric.residual = RMS radial distance (m) over the "
       "points used. The box output is the plain PCA box. The grasp prototype uses the "
-      "superquadric's full extents. Metrics: objects, mean_residual_m, fit_ms.");
+      "superquadric's full extents. Metrics: objects, mean_residual_m, fit_ms, and how the "
+      "fits of the frame ended: fits_converged (the cost or the step fell below its "
+      "tolerance), fits_at_iteration_limit (max_iterations reached first), fits_stalled (no "
+      "step lowered the cost any more, or the step was not finite), mean_iterations.");
   declare_object_ports(spec);
   spec.param("max_points", 200,
              "The fit uses a random subsample of this many of an object's points (all if fewer).",
@@ -52,7 +82,7 @@ StageSpec SuperquadricStage::spec() {
   return spec;
 }
 
-void SuperquadricStage::fit_object(ObjectGeometry& geometry) const {
+algo::SolverSummary SuperquadricStage::fit_object(ObjectGeometry& geometry) const {
   ObjectModel& model = geometry.model;
   model.box.residual_m = box_surface_rms_m(model.box, geometry.points_m);
   OrientedBox initial = model.box;
@@ -64,9 +94,11 @@ void SuperquadricStage::fit_object(ObjectGeometry& geometry) const {
   SuperquadricFitOptions options = fit_options_;
   options.seed = object_seed(fit_options_.seed, model.id);
   const Plane* contact = fit_options_.support_weight > 0.0 ? geometry.support : nullptr;
-  model.superquadric = fit_superquadric(geometry.points_m, initial, contact, options).superquadric;
+  const SuperquadricFit fit = fit_superquadric(geometry.points_m, initial, contact, options);
+  model.superquadric = fit.superquadric;
   model.grasp = grasp_rule_.classify(
       2.0 * (model.superquadric.valid ? model.superquadric.size_m : model.box.half_extents_m));
+  return fit.summary;
 }
 
 SuperquadricStage::SuperquadricStage(const Params& params)
@@ -76,7 +108,7 @@ SuperquadricStage::SuperquadricStage(const Params& params)
       grasp_rule_(GraspRule::from(params)) {
   fit_options_.max_points = static_cast<int>(params.get_int("max_points"));
   fit_options_.seed = static_cast<std::uint64_t>(params.get_int("seed"));
-  fit_options_.max_iterations = static_cast<int>(params.get_int("max_iterations"));
+  fit_options_.solver.max_iterations = static_cast<int>(params.get_int("max_iterations"));
   fit_options_.support_weight = params.get_double("support_weight");
   fit_options_.size_prior_weight = params.get_double("size_prior_weight");
 }
@@ -93,10 +125,13 @@ void SuperquadricStage::process(ProcessContext& ctx) {
   std::vector<ObjectGeometry> geometries =
       describe_objects(labels, points, planes, support_tolerance_m_, support_max_gap_m_);
   // Objects are fitted independently (each with its own seed), one or more per worker.
+  std::vector<algo::SolverSummary> summaries(geometries.size());
   ctx.parallel_for(static_cast<std::int64_t>(geometries.size()), 1,
                    [&](std::int64_t begin, std::int64_t end) {
-                     for (std::int64_t i = begin; i < end; ++i)
-                       fit_object(geometries[static_cast<std::size_t>(i)]);
+                     for (std::int64_t i = begin; i < end; ++i) {
+                       const auto object = static_cast<std::size_t>(i);
+                       summaries[object] = fit_object(geometries[object]);
+                     }
                    });
   double residual_sum_m = 0.0;
   int fitted = 0;
@@ -112,6 +147,7 @@ void SuperquadricStage::process(ProcessContext& ctx) {
   ctx.metric("objects", static_cast<double>(list.objects.size()));
   ctx.metric("mean_residual_m", fitted > 0 ? residual_sum_m / fitted : 0.0);
   ctx.metric("fit_ms", fit_ms);
+  report_solver_stops(ctx, summaries);
   ctx.output("objects", std::move(list));
 }
 

@@ -20,7 +20,7 @@ class SuperquadricStage final : public Stage {
 
  private:
   // Box residual, initial box, superquadric and grasp prototype of one object, in place.
-  void fit_object(ObjectGeometry& geometry) const;
+  algo::SolverSummary fit_object(ObjectGeometry& geometry) const;
 
   double support_tolerance_m_;
   double support_max_gap_m_;
