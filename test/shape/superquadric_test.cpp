@@ -173,5 +173,40 @@ TEST(Superquadric, EmptyTinyAndInvalidObjectsDoNotCrash) {
   EXPECT_EQ(list.objects[2].grasp, GraspPrototype::none);
 }
 
+double metric_of(const std::vector<Metric>& metrics, const std::string& name) {
+  for (const Metric& metric : metrics)
+    if (metric.name == name) return metric.value;
+  ADD_FAILURE() << "no metric " << name;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+TEST(Superquadric, ReportsWhyItsFitsEnded) {
+  const TabletopScene scene = render_tabletop(TabletopShape::box, {0.06, 0.035, 0.05}, 50.0);
+  // Object 2: three pixels, too few for a fit, so it counts under no stop reason.
+  TabletopScene two = scene;
+  two.objects.labels = scene.objects.labels.clone();
+  for (int u = 0; u < 3; ++u)
+    two.objects.labels.at<int>(5, u) = 2;
+  const auto run = [&](std::int64_t max_iterations) {
+    testing::StageRunner<SuperquadricStage> runner({{"max_iterations", max_iterations}});
+    runner.set_input("objects", Packet::make(two.objects));
+    runner.set_input("points", Packet::make(two.points));
+    runner.set_input("planes", Packet::make(two.planes));
+    runner.run();
+    return runner.metrics();
+  };
+  const auto full = run(200);
+  EXPECT_EQ(metric_of(full, "fits_converged"), 1.0);
+  EXPECT_EQ(metric_of(full, "fits_at_iteration_limit"), 0.0);
+  EXPECT_EQ(metric_of(full, "fits_stalled"), 0.0);
+  EXPECT_GT(metric_of(full, "mean_iterations"), 1.0);
+  EXPECT_LT(metric_of(full, "mean_iterations"), 200.0);
+  // One step cannot reach the tolerance from the initial box.
+  const auto cut = run(1);
+  EXPECT_EQ(metric_of(cut, "fits_converged"), 0.0);
+  EXPECT_EQ(metric_of(cut, "fits_at_iteration_limit"), 1.0);
+  EXPECT_EQ(metric_of(cut, "mean_iterations"), 1.0);
+}
+
 }  // namespace
 }  // namespace facet::shape
