@@ -14,85 +14,14 @@
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
+#include "planes/candidate_planes.hpp"
+#include "planes/plane_assignment.hpp"
 #include "planes/scene_model.hpp"
 #include "planes/table_outline.hpp"
 #include "planes/world_up.hpp"
 
 namespace facet::planes {
 namespace {
-
-struct Candidate {
-  std::int32_t patch = 0;
-  std::int64_t size_px = 0;
-  std::vector<float> points;  // x, y, z of each valid pixel of the patch
-  PlaneModel model;
-
-  Eigen::Vector3f centroid_m() const {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i + 2 < points.size(); i += 3)
-      sum += Eigen::Vector3d(points[i], points[i + 1], points[i + 2]);
-    const auto count = static_cast<double>(points.size() / 3);
-    if (count == 0) return Eigen::Vector3f::Zero();
-    return (sum / count).cast<float>();
-  }
-};
-
-// Large patches, largest first (ties: lower id first), with at most max_points of their points
-// each, evenly spread: every k-th point in raster order. A few thousand points fix a plane as
-// well as the hundreds of thousands of a table top, at a fraction of the copying.
-std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& xyz,
-                                          std::int32_t count, std::int64_t min_px,
-                                          int max_candidates, std::int64_t max_points) {
-  const auto* label = labels.ptr<std::int32_t>();
-  const auto* point = xyz.ptr<float>();
-  const std::size_t total = labels.total();
-  // Sizes count patch pixels (those of grow.surfaces all have a valid point); only the sampled
-  // points are checked below.
-  std::vector<std::int64_t> size_px(static_cast<std::size_t>(count) + 1, 0);
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::int32_t id = label[i];
-    if (id > 0 && id <= count) ++size_px[id];
-  }
-  std::vector<std::int32_t> ids;
-  for (std::int32_t id = 1; id <= count; ++id) {
-    if (size_px[id] >= min_px) ids.push_back(id);
-  }
-  std::stable_sort(ids.begin(), ids.end(),
-                   [&](std::int32_t a, std::int32_t b) { return size_px[a] > size_px[b]; });
-  if (ids.size() > static_cast<std::size_t>(max_candidates)) ids.resize(max_candidates);
-  if (ids.empty()) return {};
-
-  std::vector<Candidate> candidates(ids.size());
-  // Per patch id: its candidate slot (-1 = none), the sampling step and the points to skip
-  // before the next sample.
-  std::vector<int> slot(static_cast<std::size_t>(count) + 1, -1);
-  std::vector<std::int64_t> step(static_cast<std::size_t>(count) + 1, 1);
-  std::vector<std::int64_t> skip(static_cast<std::size_t>(count) + 1, 0);
-  for (std::size_t c = 0; c < ids.size(); ++c) {
-    const std::int32_t id = ids[c];
-    candidates[c].patch = id;
-    candidates[c].size_px = size_px[id];
-    step[id] = std::max<std::int64_t>(1, (size_px[id] + max_points - 1) / max_points);
-    candidates[c].points.reserve(3 * static_cast<std::size_t>(size_px[id] / step[id] + 1));
-    slot[id] = static_cast<int>(c);
-  }
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::int32_t id = label[i];
-    if (id <= 0 || id > count || slot[id] < 0) continue;
-    if (skip[id] > 0) {
-      --skip[id];
-      continue;
-    }
-    const float* p = point + 3 * i;
-    if (!std::isfinite(p[2])) continue;  // the next point of the patch is taken instead
-    skip[id] = step[id] - 1;
-    auto& out = candidates[slot[id]].points;
-    out.push_back(p[0]);
-    out.push_back(p[1]);
-    out.push_back(p[2]);
-  }
-  return candidates;
-}
 
 // The table's outline is the hull of the points on every 8th row and column: a few thousand of
 // them, whose hull is within a few millimetres of the full one.
@@ -113,36 +42,52 @@ std::int64_t estimate_valid_px(const cv::Mat& xyz) {
   return valid * kRowStep;
 }
 
-// The points of `candidate` farther than `distance_m` from `model`, and the centroid of the others
-// (those on the plane).
-struct PlaneSplit {
-  std::vector<float> off;
-  Eigen::Vector3f on_centroid_m = Eigen::Vector3f::Zero();
+// The accepted candidates in candidate order, with their role in the scene model and the
+// index of the table's plane among them (-1: none).
+struct AcceptedPlanes {
+  std::vector<PlaneModel> models;
+  std::vector<PlaneRole> roles;
+  int table = -1;
 };
 
-PlaneSplit split_by_plane(const Candidate& candidate, const PlaneModel& model, float distance_m) {
-  PlaneSplit split;
-  Eigen::Vector3d on_sum = Eigen::Vector3d::Zero();
-  std::size_t on_count = 0;
-  for (std::size_t i = 0; i + 2 < candidate.points.size(); i += 3) {
-    const float* p = &candidate.points[i];
-    if (std::abs(model.signed_distance_m(p)) > distance_m) {
-      split.off.insert(split.off.end(), p, p + 3);
+AcceptedPlanes accepted_planes(const std::vector<CandidatePlane>& candidates,
+                               const TableChoice& table,
+                               const std::vector<CandidateEvidence>& evidence,
+                               const Eigen::Vector3f& up, double min_cos_horizontal) {
+  AcceptedPlanes out;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (!evidence[c].accepted) continue;
+    const PlaneModel& model = candidates[c].model;
+    out.models.push_back(model);
+    const bool horizontal = model.normal.dot(up) >= min_cos_horizontal;
+    if (table.table >= 0 && table.roles[c] == CandidateRole::table) {
+      out.roles.push_back(PlaneRole::table);
+      if (static_cast<int>(c) == table.table) out.table = static_cast<int>(out.models.size()) - 1;
+    } else if (horizontal && table.table >= 0 && table.height_m[c] < 0.0F) {
+      out.roles.push_back(PlaneRole::floor);
     } else {
-      on_sum += Eigen::Vector3d(p[0], p[1], p[2]);
-      ++on_count;
+      out.roles.push_back(PlaneRole::wall);
     }
   }
-  if (on_count > 0) split.on_centroid_m = (on_sum / static_cast<double>(on_count)).cast<float>();
-  return split;
+  return out;
 }
 
-// Two fits of one patch that are the same plane (within `angle_cos` and `distance_m` at the
-// second fit's centroid): the second saw the first one's noisy fringe, not a plane of its own.
-bool same_plane(const PlaneModel& a, const PlaneModel& b, const Eigen::Vector3f& b_centroid,
-                float angle_cos, float distance_m) {
-  return std::abs(a.normal.dot(b.normal)) >= angle_cos &&
-         std::abs(a.signed_distance_m(b_centroid.data())) <= distance_m;
+// The table's patches: those of which a good share lies on a plane of the table's level. A share,
+// not a majority: beyond 2 m a table's own disparity steps put much of it more than delta off.
+std::vector<char> table_patches(const PlaneAssignment& assignment,
+                                const std::vector<PlaneRole>& roles) {
+  const std::size_t plane_count = roles.size();
+  const std::size_t patch_slots = assignment.patch_px.size();
+  std::vector<char> out(patch_slots, 0);
+  for (std::size_t slot = 1; slot < patch_slots; ++slot) {
+    std::int64_t on_table_px = 0;
+    for (std::size_t c = 0; c < plane_count; ++c) {
+      if (roles[c] == PlaneRole::table) on_table_px += assignment.near_px[slot * plane_count + c];
+    }
+    out[slot] = static_cast<double>(on_table_px) >=
+                kOutlinePatchShare * static_cast<double>(assignment.patch_px[slot]);
+  }
+  return out;
 }
 
 }  // namespace
@@ -351,13 +296,7 @@ StageSpec SupportPlaneStage::spec() {
 }
 
 SupportPlaneStage::SupportPlaneStage(const Params& params)
-    : candidate_min_px_(params.get_int("candidate_min_px")),
-      max_candidates_(static_cast<int>(params.get_int("max_candidates"))),
-      planes_per_patch_(static_cast<int>(params.get_int("planes_per_patch"))),
-      max_fit_points_(params.get_int("fit_max_points")),
-      object_face_off_plane_fraction_(params.get_double("object_face_off_plane_fraction")),
-      min_object_height_m_(static_cast<float>(params.get_double("min_object_height_m"))),
-      horizontal_max_deg_(params.get_double("horizontal_max_deg")),
+    : horizontal_max_deg_(params.get_double("horizontal_max_deg")),
       up_prior_max_deg_(params.get_double("up_prior_max_deg")),
       min_segment_px_(params.get_int("min_segment_px")),
       split_gate_(static_cast<float>(params.get_double("split_max_distance_m")),
@@ -380,6 +319,17 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
   table_rule_.max_object_height_m = static_cast<float>(params.get_double("max_object_height_m"));
   table_rule_.min_table_fraction = params.get_double("min_table_fraction");
   table_rule_.large_view_fraction = support_rule_.large_view_fraction;
+  candidate_rule_.min_px = params.get_int("candidate_min_px");
+  candidate_rule_.max_candidates = static_cast<int>(params.get_int("max_candidates"));
+  candidate_rule_.max_fit_points = params.get_int("fit_max_points");
+  candidate_rule_.planes_per_patch = static_cast<int>(params.get_int("planes_per_patch"));
+  candidate_rule_.off_plane_m = 2.0F * distance_m;
+  candidate_rule_.same_plane_cos = static_cast<float>(support_rule_.min_cos_horizontal);
+  assignment_rule_.inlier_distance_m = distance_m;
+  assignment_rule_.object_face_off_plane_fraction =
+      params.get_double("object_face_off_plane_fraction");
+  assignment_rule_.min_object_height_m =
+      static_cast<float>(params.get_double("min_object_height_m"));
   try {
     up_ = parse_up(params.get_string("up"));
   } catch (const std::invalid_argument& error) {
@@ -399,60 +349,18 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   // Candidates and their planes; the generator restarts every frame, so a frame's result does
   // not depend on the frames before it (and clones agree).
   std::mt19937 rng(seed_);
-  std::vector<Candidate> candidates = collect_candidates(
-      labels, xyz, patches.count, candidate_min_px_, max_candidates_, max_fit_points_);
-  // A patch may hold more than one plane: where no normal edge parts them (a far table running
-  // into the wall behind it, seen at a grazing angle), one patch spans both. What a fit leaves
-  // clearly off its plane (beyond 2 delta), when it is a candidate's worth of pixels, is fitted
-  // again, up to planes_per_patch planes.
-  struct Fitted {
-    PlaneModel model;
-    std::int64_t size_px;
-    Eigen::Vector3f centroid;
-  };
-  std::vector<Fitted> fitted;
-  const float off_plane_m = 2.0F * support_rule_.inlier_distance_m;
-  const float same_plane_cos = static_cast<float>(support_rule_.min_cos_horizontal);
-  for (auto& candidate : candidates) {
-    Candidate part = std::move(candidate);
-    std::optional<PlaneModel> previous;
-    for (int plane = 0; plane < planes_per_patch_; ++plane) {
-      const auto model = fit_plane(part.points, fit_rule_, rng);
-      if (!model) break;
-      const Eigen::Vector3f centroid = part.centroid_m();
-      if (previous && same_plane(*previous, *model, centroid, same_plane_cos, off_plane_m)) break;
-      // The last plane allowed, or a patch whose off-plane points are too few for another
-      // candidate, keeps the whole of what is left, size and centroid, as one plane per patch did.
-      const bool last = plane + 1 == planes_per_patch_;
-      PlaneSplit split = last ? PlaneSplit{} : split_by_plane(part, *model, off_plane_m);
-      const auto sampled = static_cast<std::int64_t>(part.points.size() / 3);
-      const std::int64_t off_px =
-          sampled > 0 ? part.size_px * static_cast<std::int64_t>(split.off.size() / 3) / sampled
-                      : 0;
-      if (last || off_px < candidate_min_px_) {
-        fitted.push_back({*model, part.size_px, centroid});
-        break;
-      }
-      // A patch that holds another plane: this plane takes its own points' size and centroid (the
-      // levels of the scene model compare centroids with planes), not the whole patch's.
-      fitted.push_back({*model, part.size_px - off_px, split.on_centroid_m});
-      previous = model;
-      part.points = std::move(split.off);
-      part.size_px = off_px;
-    }
-  }
-  // Largest first, as the candidates were: the table and the assignment order rely on it.
-  std::stable_sort(fitted.begin(), fitted.end(),
-                   [](const Fitted& a, const Fitted& b) { return a.size_px > b.size_px; });
+  const std::vector<CandidatePlane> candidates =
+      find_candidate_planes(labels, xyz, patches.count, candidate_rule_, fit_rule_, rng);
   std::vector<PlaneModel> models;
   std::vector<std::int64_t> sizes;
   std::vector<Eigen::Vector3f> centroids;
-  for (const Fitted& f : fitted) {
-    models.push_back(f.model);
-    sizes.push_back(f.size_px);
-    centroids.push_back(f.centroid);
+  for (const CandidatePlane& candidate : candidates) {
+    models.push_back(candidate.model);
+    sizes.push_back(candidate.size_px);
+    centroids.push_back(candidate.centroid_m);
   }
 
+  // The scene model: world up, the table, then which other candidates are support planes.
   const Eigen::Vector3f camera_up(0.0F, -1.0F, 0.0F);
   const int dominant = up_ ? dominant_horizontal(models, *up_, horizontal_max_deg_)
                            : dominant_horizontal(models, camera_up, up_prior_max_deg_);
@@ -464,151 +372,87 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
           : TableChoice{-1, std::vector<CandidateRole>(models.size()), {}};
   const std::vector<CandidateEvidence> evidence =
       decide_support(xyz, models, table.table, table.roles, up, support_rule_);
-
-  // Assignment, largest plane first: a valid point within delta of a support plane joins the
-  // first such plane in candidate order (what taking the planes one after the other would
-  // give), unless it belongs to an object face, a patch that lies mostly well off the planes:
-  // the bottom band of a box side, within delta of the table it stands on, stays with the box.
-  std::vector<PlaneModel> accepted;
-  std::vector<PlaneRole> roles;
-  std::int32_t table_id = 0;
-  for (std::size_t c = 0; c < models.size(); ++c) {
-    if (!evidence[c].accepted) continue;
-    accepted.push_back(models[c]);
-    const bool horizontal = models[c].normal.dot(up) >= support_rule_.min_cos_horizontal;
-    if (table.table >= 0 && table.roles[c] == CandidateRole::table) {
-      roles.push_back(PlaneRole::table);
-      if (static_cast<int>(c) == table.table) table_id = static_cast<std::int32_t>(accepted.size());
-    } else if (horizontal && table.table >= 0 && table.height_m[c] < 0.0F) {
-      roles.push_back(PlaneRole::floor);
-    } else {
-      roles.push_back(PlaneRole::wall);
-    }
-  }
-  const float delta_m = support_rule_.inlier_distance_m;
+  const AcceptedPlanes accepted =
+      accepted_planes(candidates, table, evidence, up, support_rule_.min_cos_horizontal);
 
   SupportPlanes planes;
   static_cast<FrameHeader&>(planes) = points;
   planes.up = up.cast<double>();
   LabelImage plane_labels;
   static_cast<FrameHeader&>(plane_labels) = points;
-  plane_labels.labels.create(labels.size(), CV_32SC1);
   // What is left for objects: patches minus plane points, minus segments too small to matter.
   LabelImage remaining;
   static_cast<FrameHeader&>(remaining) = patches;
   remaining.count = patches.count;
-  remaining.labels.create(labels.size(), CV_32SC1);
+  const PlaneAssignment assignment =
+      assign_to_planes(labels, patches.count, xyz, accepted.models, accepted.roles, accepted.table,
+                       assignment_rule_, plane_labels.labels, remaining.labels);
+  remaining.count = split_and_drop_left_patches(remaining.labels, patches.count, assignment, xyz);
 
-  auto* plane_of = plane_labels.labels.ptr<std::int32_t>();
-  auto* left = remaining.labels.ptr<std::int32_t>();
-  const auto* label = labels.ptr<std::int32_t>();
-  const auto* point = xyz.ptr<float>();
-  const std::size_t total = labels.total();
-  const auto patch_slots = static_cast<std::size_t>(std::max(0, patches.count)) + 1;
-  // Slot 0 collects pixels of no patch (or of an id outside 1..count).
-  const auto patch_slot = [&](std::int32_t id) {
-    return id > 0 && id <= patches.count ? static_cast<std::size_t>(id) : std::size_t{0};
-  };
-  // Per patch: valid points, those clearly off the planes (beyond 2 delta from all), their
-  // summed height above the table, and per (patch, plane) the points within delta and their
-  // squared distances, so that the patches are judged and the plane statistics made with no
-  // second look at the points.
-  const std::size_t plane_count = accepted.size();
-  const std::size_t table_c = table_id > 0 ? static_cast<std::size_t>(table_id - 1) : plane_count;
-  std::vector<std::int64_t> patch_px(patch_slots, 0);
-  std::vector<std::int64_t> off_px(patch_slots, 0);
-  // Of the points that are within delta of the table (and of no larger plane before it).
-  std::vector<double> table_height_sum_m(patch_slots, 0.0);
-  std::vector<std::int64_t> near_px(patch_slots * plane_count, 0);
-  std::vector<double> near_squared_m2(patch_slots * plane_count, 0.0);
-  std::int64_t valid_px = 0;
-  for (std::size_t i = 0; i < total; ++i) {
-    const float* p = point + 3 * i;
-    std::int32_t near = 0;
-    const std::size_t slot = patch_slot(label[i]);
-    if (std::isfinite(p[2])) {
-      ++valid_px;
-      bool off = true;
-      for (std::size_t c = 0; c < plane_count; ++c) {
-        const float d = accepted[c].signed_distance_m(p);
-        const float distance = std::abs(d);
-        off = off && distance > 2.0F * delta_m;
-        if (distance <= delta_m) {
-          near = static_cast<std::int32_t>(c + 1);
-          ++near_px[slot * plane_count + c];
-          near_squared_m2[slot * plane_count + c] += static_cast<double>(d) * d;
-          if (c == table_c) table_height_sum_m[slot] += d;
-          break;
-        }
-      }
-      ++patch_px[slot];
-      off_px[slot] += off ? 1 : 0;
-    }
-    plane_of[i] = near;
+  for (std::size_t c = 0; c < accepted.models.size(); ++c) {
+    Plane plane;
+    plane.id = static_cast<std::int32_t>(c + 1);
+    plane.normal = accepted.models[c].normal.cast<double>();
+    plane.offset_m = accepted.models[c].offset_m;
+    plane.inliers = assignment.inliers[c];
+    plane.rms_m = assignment.rms_m[c];
+    plane.horizontal = plane.normal.dot(planes.up) >= support_rule_.min_cos_horizontal;
+    plane.role = accepted.roles[c];
+    planes.planes.push_back(plane);
   }
-  // Which patches give their points within delta to the planes: all but object faces. A face
-  // that lies mostly well off the planes keeps them from every plane (the bottom band of a box
-  // side). A patch whose points within delta of the table lie on average more than half of
-  // min_object_height_m above it keeps them from the table's level and the floor: the top of a
-  // book 1 cm thick (its points lie min_object_height_m and more above), the bottom band of a
-  // flat object's side (evenly spread over 0..delta). The table's own points lie around 0.
-  std::vector<char> joins_any(patch_slots, 1);
-  std::vector<char> joins_horizontal(patch_slots, 1);
-  for (std::size_t slot = 1; slot < patch_slots; ++slot) {
-    const auto size = static_cast<double>(patch_px[slot]);
-    joins_any[slot] = static_cast<double>(off_px[slot]) < object_face_off_plane_fraction_ * size;
-    const std::int64_t table_near_px =
-        table_c < plane_count ? near_px[slot * plane_count + table_c] : 0;
-    const bool raised = table_near_px > 0 &&
-                        table_height_sum_m[slot] > 0.5 * static_cast<double>(min_object_height_m_) *
-                                                       static_cast<double>(table_near_px);
-    joins_horizontal[slot] = joins_any[slot] != 0 && !raised ? 1 : 0;
-  }
-  std::vector<char> horizontal_support(plane_count, 0);
-  for (std::size_t c = 0; c < plane_count; ++c) {
-    horizontal_support[c] = roles[c] != PlaneRole::wall ? 1 : 0;
-  }
-  const auto joins = [&](std::size_t slot, std::size_t c) {
-    return horizontal_support[c] != 0 ? joins_horizontal[slot] != 0 : joins_any[slot] != 0;
-  };
-  std::vector<std::int64_t> inliers(plane_count, 0);
-  std::vector<double> squared_sum(plane_count, 0.0);
-  for (std::size_t slot = 0; slot < patch_slots; ++slot) {
-    for (std::size_t c = 0; c < plane_count; ++c) {
-      if (!joins(slot, c)) continue;
-      inliers[c] += near_px[slot * plane_count + c];
-      squared_sum[c] += near_squared_m2[slot * plane_count + c];
-    }
+  if (accepted.table >= 0) {
+    // Every plane of the table's level outlines the table.
+    std::vector<char> table_ids(accepted.models.size() + 1, 0);
+    for (std::size_t c = 0; c < accepted.models.size(); ++c)
+      table_ids[c + 1] = accepted.roles[c] == PlaneRole::table;
+    planes.table_id = accepted.table + 1;
+    planes.table_outline_m = table_outline(
+        plane_labels.labels, labels, table_patches(assignment, accepted.roles), xyz, table_ids,
+        accepted.models[static_cast<std::size_t>(accepted.table)], up, kOutlineStridePx);
   }
 
-  std::vector<std::int64_t> left_px(patch_slots, 0);
-  std::int64_t plane_px = 0;
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::size_t slot = patch_slot(label[i]);
-    if (plane_of[i] != 0 && joins(slot, static_cast<std::size_t>(plane_of[i] - 1))) {
-      left[i] = 0;
-      ++plane_px;
-      continue;
-    }
-    plane_of[i] = 0;
-    left[i] = static_cast<std::int32_t>(slot);
-    ++left_px[slot];
+  if (assignment.valid_px == 0) {
+    ctx.warn("no valid points: no planes");
+  } else if (planes.planes.empty()) {
+    ctx.warn("no support plane found: every patch is left for objects");
   }
-  // A patch that gave points to a plane and kept some may have kept several pieces (the table's
-  // patch run onto object tops through gaps in the edges): one patch each.
+  ctx.metric("planes", static_cast<double>(planes.planes.size()));
+  ctx.metric("plane_ratio", assignment.valid_px > 0 ? static_cast<double>(assignment.plane_px) /
+                                                          static_cast<double>(assignment.valid_px)
+                                                    : 0.0);
+  plane_labels.count = static_cast<std::int32_t>(planes.planes.size());
+  ctx.output("planes", std::move(planes));
+  ctx.output("plane_labels", std::move(plane_labels));
+  PatchAdjacency adjacency = algo::find_patch_contacts(remaining.labels, remaining.count);
+  static_cast<FrameHeader&>(adjacency) = patches;
+  ctx.output("patches", std::move(remaining));
+  ctx.output("adjacency", std::move(adjacency));
+}
+
+// A patch that gave points to a plane and kept some may have kept several pieces (the table's
+// patch run onto object tops through gaps in the edges): one patch each. Then the segments too
+// small to matter go; slot 0 (no patch) is never kept. Returns the new patch count.
+std::int32_t SupportPlaneStage::split_and_drop_left_patches(cv::Mat& left_labels,
+                                                            std::int32_t patch_count,
+                                                            const PlaneAssignment& assignment,
+                                                            const cv::Mat& xyz) {
+  auto* left = left_labels.ptr<std::int32_t>();
+  const std::size_t total = left_labels.total();
+  const std::size_t patch_slots = assignment.patch_px.size();
+  std::vector<std::int64_t> left_px = assignment.left_px;
+  std::int32_t count = patch_count;
   std::vector<char> cut(patch_slots, 0);
   bool any_cut = false;
   for (std::size_t slot = 1; slot < patch_slots; ++slot) {
-    cut[slot] = left_px[slot] > 0 && left_px[slot] < patch_px[slot] ? 1 : 0;
+    cut[slot] = left_px[slot] > 0 && left_px[slot] < assignment.patch_px[slot] ? 1 : 0;
     any_cut = any_cut || cut[slot] != 0;
   }
   if (any_cut) {
-    remaining.count = pieces_.split(remaining.labels, patches.count, cut, xyz, split_gate_);
-    left_px.assign(static_cast<std::size_t>(remaining.count) + 1, 0);
+    count = pieces_.split(left_labels, patch_count, cut, xyz, split_gate_);
+    left_px.assign(static_cast<std::size_t>(count) + 1, 0);
     for (std::size_t i = 0; i < total; ++i)
       ++left_px[static_cast<std::size_t>(left[i])];
   }
-  // Segments too small to matter; slot 0 (no patch) is never kept.
   const std::size_t left_slots = left_px.size();
   std::vector<char> too_small(left_slots, 0);
   bool small_segments = false;
@@ -622,55 +466,7 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
       if (too_small[static_cast<std::size_t>(left[i])] != 0) left[i] = 0;
     }
   }
-
-  for (std::size_t c = 0; c < accepted.size(); ++c) {
-    Plane plane;
-    plane.id = static_cast<std::int32_t>(c + 1);
-    plane.normal = accepted[c].normal.cast<double>();
-    plane.offset_m = accepted[c].offset_m;
-    plane.inliers = inliers[c];
-    plane.rms_m =
-        inliers[c] > 0 ? std::sqrt(squared_sum[c] / static_cast<double>(inliers[c])) : 0.0;
-    plane.horizontal = plane.normal.dot(planes.up) >= support_rule_.min_cos_horizontal;
-    plane.role = roles[c];
-    planes.planes.push_back(plane);
-  }
-  if (table_id > 0) {
-    // Every plane of the table's level outlines the table.
-    std::vector<char> table_ids(plane_count + 1, 0);
-    for (std::size_t c = 0; c < plane_count; ++c)
-      table_ids[c + 1] = roles[c] == PlaneRole::table;
-    planes.table_id = table_id;
-    // The table's patches: those of which a good share lies on the table's plane. A share, not a
-    // majority: beyond 2 m a table's own disparity steps put much of it more than delta off.
-    std::vector<char> table_patches(patch_slots, 0);
-    for (std::size_t slot = 1; slot < patch_slots; ++slot) {
-      std::int64_t on_table_px = 0;
-      for (std::size_t c = 0; c < plane_count; ++c) {
-        if (table_ids[c + 1] != 0) on_table_px += near_px[slot * plane_count + c];
-      }
-      table_patches[slot] = static_cast<double>(on_table_px) >=
-                            kOutlinePatchShare * static_cast<double>(patch_px[slot]);
-    }
-    planes.table_outline_m = table_outline(plane_labels.labels, labels, table_patches, xyz,
-                                           table_ids, accepted[table_id - 1], up, kOutlineStridePx);
-  }
-
-  if (valid_px == 0) {
-    ctx.warn("no valid points: no planes");
-  } else if (planes.planes.empty()) {
-    ctx.warn("no support plane found: every patch is left for objects");
-  }
-  ctx.metric("planes", static_cast<double>(planes.planes.size()));
-  ctx.metric("plane_ratio",
-             valid_px > 0 ? static_cast<double>(plane_px) / static_cast<double>(valid_px) : 0.0);
-  plane_labels.count = static_cast<std::int32_t>(planes.planes.size());
-  ctx.output("planes", std::move(planes));
-  ctx.output("plane_labels", std::move(plane_labels));
-  PatchAdjacency adjacency = algo::find_patch_contacts(remaining.labels, remaining.count);
-  static_cast<FrameHeader&>(adjacency) = patches;
-  ctx.output("patches", std::move(remaining));
-  ctx.output("adjacency", std::move(adjacency));
+  return count;
 }
 
 }  // namespace facet::planes

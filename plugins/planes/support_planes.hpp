@@ -9,6 +9,8 @@
 #include "facet/algo/label_pieces.hpp"
 #include "facet/algo/neighbour_gate.hpp"
 #include "facet/stage.hpp"
+#include "planes/candidate_planes.hpp"
+#include "planes/plane_assignment.hpp"
 #include "planes/plane_fit.hpp"
 #include "planes/scene_model.hpp"
 #include "planes/support_rule.hpp"
@@ -22,15 +24,16 @@ class SupportPlaneStage final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  std::int32_t split_and_drop_left_patches(cv::Mat& left_labels, std::int32_t patch_count,
+                                           const PlaneAssignment& assignment, const cv::Mat& xyz);
+
+  // The four kernels: candidate planes, the table (scene model), the support decision, and the
+  // assignment of the points to the accepted planes.
+  CandidateRule candidate_rule_;
   PlaneFitRule fit_rule_;
-  SupportRule support_rule_;
   TableRule table_rule_;
-  std::int64_t candidate_min_px_;
-  int max_candidates_;
-  int planes_per_patch_;
-  std::int64_t max_fit_points_;
-  double object_face_off_plane_fraction_;
-  float min_object_height_m_;
+  SupportRule support_rule_;
+  AssignmentRule assignment_rule_;
   double horizontal_max_deg_;
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto
