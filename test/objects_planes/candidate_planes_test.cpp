@@ -14,7 +14,9 @@ namespace facet::planes {
 namespace {
 
 // 100 × 60 pixels. Columns 0..59: a table top, the plane y = 0.5 m (camera frame, y down), 1 to
-// 2 m away. Columns 60..99: a wall, the plane z = 3 m. Rows 0..4 of columns 0..9: a small patch.
+// 2 m away. Columns 60..99: a wall, the plane z = 3 m, from y = -0.5 down to 0.3 m (ending well
+// above the table's plane, so that no wall point lies on it). Rows 0..4 of columns 0..9: a small
+// patch.
 struct Frame {
   cv::Mat labels{60, 100, CV_32SC1, cv::Scalar(0)};
   cv::Mat xyz{60, 100, CV_32FC3, cv::Scalar::all(std::numeric_limits<float>::quiet_NaN())};
@@ -29,7 +31,7 @@ struct Frame {
           xyz.at<cv::Vec3f>(row, col) = {-0.5F + u, 0.5F, 1.0F + v};
           labels.at<std::int32_t>(row, col) = table_id;
         } else {
-          xyz.at<cv::Vec3f>(row, col) = {-1.0F + 2.0F * u, -0.5F + v, 3.0F};
+          xyz.at<cv::Vec3f>(row, col) = {-1.0F + 2.0F * u, -0.5F + 0.8F * v, 3.0F};
           labels.at<std::int32_t>(row, col) = wall_id;
         }
         if (small_id != 0 && row < 5 && col < 10) labels.at<std::int32_t>(row, col) = small_id;
