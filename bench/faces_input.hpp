@@ -12,7 +12,7 @@
 #include "edges/edges_max.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
-#include "filters/median_filter.hpp"
+#include "filter/median_filter.hpp"
 #include "normals/cross_stage.hpp"
 
 namespace facet::bench {

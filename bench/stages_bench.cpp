@@ -10,7 +10,7 @@
 
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
-#include "filters/valid_median.hpp"
+#include "filter/valid_median.hpp"
 #include "io/frames_source.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
 // filter.median against a straightforward reference, and the rules about invalid pixels.
-#include "filters/median_filter.hpp"
+#include "filter/median_filter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
-#include "filters/sorting_network.hpp"
-#include "filters/valid_median.hpp"
+#include "filter/sorting_network.hpp"
+#include "filter/valid_median.hpp"
 
 namespace {
 

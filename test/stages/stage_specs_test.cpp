@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "facet/plugin.hpp"
-#include "filters/median_filter.hpp"
+#include "filter/median_filter.hpp"
 #include "io/depth_sink.hpp"
 #include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"

@@ -1,4 +1,4 @@
-#include "filters/median_kernel.hpp"
+#include "filter/median_kernel.hpp"
 
 #include <cstddef>
 #include <cstring>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "filters/sorting_network.hpp"
+#include "filter/sorting_network.hpp"
 
 // The kernels are compiled twice on x86-64, for AVX2 and for the baseline, and the loader picks
 // one at start-up; everywhere else the compiler's default target is used.

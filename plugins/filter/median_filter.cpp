@@ -1,4 +1,4 @@
-#include "filters/median_filter.hpp"
+#include "filter/median_filter.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -1,10 +1,10 @@
-#include "filters/valid_median.hpp"
+#include "filter/valid_median.hpp"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "filters/median_kernel.hpp"
+#include "filter/median_kernel.hpp"
 
 namespace facet::filters {
 namespace {

@@ -2,7 +2,7 @@
 // filter.median: edge-preserving denoising of depth images that never invents depth in holes.
 
 #include "facet/stage.hpp"
-#include "filters/valid_median.hpp"
+#include "filter/valid_median.hpp"
 
 namespace facet::filters {
 

@@ -1,0 +1,1 @@
+// Nothing: the dependency-rule project is configured, never built.
