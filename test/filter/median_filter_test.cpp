@@ -323,4 +323,23 @@ TEST(MedianFilterStage, WarnsAboutPinholesUnlessItFillsThem) {
   EXPECT_TRUE(tiny.warnings().empty());
 }
 
+TEST(MedianFilterStage, SpecDocumentsEveryPortAndParameter) {
+  const facet::StageSpec spec = facet::filters::MedianFilter::spec();
+  EXPECT_EQ(spec.name(), "filter.median");
+  EXPECT_FALSE(spec.summary().empty());
+  EXPECT_EQ(spec.concurrency(), facet::Concurrency::clonable);
+  for (const auto& port : spec.inputs())
+    EXPECT_FALSE(port.doc.empty()) << port.name;
+  for (const auto& port : spec.outputs())
+    EXPECT_FALSE(port.doc.empty()) << port.name;
+  for (const auto& param : spec.params()) {
+    EXPECT_FALSE(param.doc.empty()) << param.name;
+    if (param.type == facet::ParamType::integer || param.type == facet::ParamType::real) {
+      EXPECT_FALSE(param.options.unit.empty()) << param.name << " has no unit";
+    }
+  }
+  ASSERT_NE(spec.find_param("size"), nullptr);
+  EXPECT_EQ(spec.find_param("size")->options.choices.size(), 2U);
+}
+
 }  // namespace

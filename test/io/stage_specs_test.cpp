@@ -1,8 +1,7 @@
-// Every stage documents its ports and parameters completely (what `facet inspect` shows).
+// Every io stage documents its ports and parameters completely (what `facet inspect` shows).
 #include <gtest/gtest.h>
 
 #include "facet/plugin.hpp"
-#include "filter/median_filter.hpp"
 #include "io/depth_sink.hpp"
 #include "io/edges_sink.hpp"
 #include "io/frames_source.hpp"
@@ -16,7 +15,6 @@ std::vector<facet::StageSpec> all_specs() {
   list.add<facet::io::LabelsSink>();
   list.add<facet::io::DepthSink>();
   list.add<facet::io::EdgesSink>();
-  list.add<facet::filters::MedianFilter>();
   return list.stages();
 }
 
@@ -41,7 +39,7 @@ TEST(StageSpecs, EveryPortAndParameterIsDocumented) {
 
 TEST(StageSpecs, NamesKindsAndConcurrency) {
   const auto specs = all_specs();
-  ASSERT_EQ(specs.size(), 5U);
+  ASSERT_EQ(specs.size(), 4U);
   EXPECT_EQ(specs[0].name(), "io.frames");
   EXPECT_TRUE(specs[0].is_source());
   EXPECT_EQ(specs[0].concurrency(), facet::Concurrency::serial);
@@ -51,9 +49,6 @@ TEST(StageSpecs, NamesKindsAndConcurrency) {
   EXPECT_EQ(specs[2].name(), "io.depth");
   EXPECT_EQ(specs[3].name(), "io.edges");
   EXPECT_TRUE(specs[3].outputs().empty());
-  EXPECT_EQ(specs[4].name(), "filter.median");
-  EXPECT_EQ(specs[4].concurrency(), facet::Concurrency::clonable);
-  EXPECT_EQ(specs[4].find_param("size")->options.choices.size(), 2U);
 }
 
 }  // namespace
