@@ -12,8 +12,8 @@
 namespace facet::partition {
 namespace {
 
-double distance_to(const FittedPlane& plane, const std::array<float, 3>& point) {
-  return static_cast<double>(plane.signed_distance_m(point[0], point[1], point[2]));
+double distance_to(const FittedPlane& plane, const Eigen::Vector3f& point) {
+  return static_cast<double>(plane.signed_distance_m(point.data()));
 }
 
 }  // namespace

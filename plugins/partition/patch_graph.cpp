@@ -18,8 +18,9 @@ PatchGraph make_patch_graph(const LabelImage& objects, const GraphNodes& graph,
     entry.planar = node.planar;
     entry.plane_rms_m = node.plane_rms_m;
     entry.centre_px = {node.centre_u_px, node.centre_v_px};
-    entry.normal = node.plane.normal;
-    entry.centroid_m = node.plane.centroid_m;
+    entry.normal = {node.plane.normal.x(), node.plane.normal.y(), node.plane.normal.z()};
+    entry.centroid_m = {node.plane.centroid_m.x(), node.plane.centroid_m.y(),
+                        node.plane.centroid_m.z()};
     out.nodes.push_back(entry);
   }
   for (const GraphEdge& edge : edges) {

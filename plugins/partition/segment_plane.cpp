@@ -1,8 +1,8 @@
 #include "partition/segment_plane.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace facet::partition {
 
@@ -24,49 +24,17 @@ void Bounds::merge(const Bounds& other) {
 }
 
 FittedPlane fit_plane(const BlobSegments& points, std::int32_t begin, std::int32_t end) {
-  FittedPlane plane;
-  const std::int32_t n = end - begin;
-  if (n < 3) return plane;
-  // Sums relative to the first point keep the covariance free of cancellation at 1 m range.
-  const auto b = static_cast<std::size_t>(begin);
-  const double ox = points.x[b];
-  const double oy = points.y[b];
-  const double oz = points.z[b];
-  double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
-  for (auto k = b; k < static_cast<std::size_t>(end); ++k) {
-    const double dx = points.x[k] - ox;
-    const double dy = points.y[k] - oy;
-    const double dz = points.z[k] - oz;
-    sx += dx;
-    sy += dy;
-    sz += dz;
-    sxx += dx * dx;
-    sxy += dx * dy;
-    sxz += dx * dz;
-    syy += dy * dy;
-    syz += dy * dz;
-    szz += dz * dz;
+  algo::PlaneMoments moments;
+  for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
+    moments.add(points.x[k], points.y[k], points.z[k]);
   }
-  const double inv = 1.0 / n;
-  const Eigen::Vector3d mean(sx * inv, sy * inv, sz * inv);
-  Eigen::Matrix3d cov;
-  cov << sxx * inv, sxy * inv, sxz * inv, sxy * inv, syy * inv, syz * inv, sxz * inv, syz * inv,
-      szz * inv;
-  cov -= mean * mean.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(cov);
-  // Collinear points (a one-pixel-wide strip) leave the normal undetermined.
-  if (solver.eigenvalues()(1) <= 1e-12) return plane;
-  Eigen::Vector3d normal = solver.eigenvectors().col(0).normalized();
-  const Eigen::Vector3d centroid = mean + Eigen::Vector3d(ox, oy, oz);
-  if (normal.dot(centroid) > 0.0) normal = -normal;
-  plane.normal = {static_cast<float>(normal.x()), static_cast<float>(normal.y()),
-                  static_cast<float>(normal.z())};
-  plane.offset_m = static_cast<float>(-normal.dot(centroid));
-  plane.centroid_m = {static_cast<float>(centroid.x()), static_cast<float>(centroid.y()),
-                      static_cast<float>(centroid.z())};
-  plane.valid = true;
-  return plane;
+  FittedPlane fitted;
+  const std::optional<algo::Plane> plane = moments.plane();
+  if (!plane) return fitted;
+  static_cast<algo::Plane&>(fitted) = *plane;
+  fitted.centroid_m = moments.centroid_m().cast<float>();
+  fitted.valid = true;
+  return fitted;
 }
 
 Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t end) {

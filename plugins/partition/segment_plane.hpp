@@ -4,22 +4,16 @@
 #include <array>
 #include <cstdint>
 
+#include "facet/algo/plane.hpp"
 #include "partition/blob_segments.hpp"
 
 namespace facet::partition {
 
-// n·p + offset_m = 0, unit normal pointing towards the camera (n·centroid < 0): a positive
-// signed distance is "in front" of the surface, seen from the camera.
-struct FittedPlane {
-  std::array<float, 3> normal{0.0F, 0.0F, -1.0F};
-  float offset_m = 0.0F;
-  std::array<float, 3> centroid_m{0.0F, 0.0F, 0.0F};
+// A segment's least-squares plane (algo::Plane: unit normal towards the camera, so a positive
+// signed distance is in front of the surface), with the centroid of the points it was fitted to.
+struct FittedPlane : algo::Plane {
+  Eigen::Vector3f centroid_m = Eigen::Vector3f::Zero();
   bool valid = false;  // false for fewer than 3 points or a degenerate (collinear) set
-
-  // n·p + offset_m: positive in front of the plane, metres.
-  float signed_distance_m(float x, float y, float z) const {
-    return normal[0] * x + normal[1] * y + normal[2] * z + offset_m;
-  }
 };
 
 // Axis-aligned bounding box, metres.
@@ -31,7 +25,7 @@ struct Bounds {
   void merge(const Bounds& other);
 };
 
-// Total least squares (smallest eigenvector of the covariance) over points [begin, end).
+// Total least squares (algo::PlaneMoments) over the points [begin, end).
 FittedPlane fit_plane(const BlobSegments& points, std::int32_t begin, std::int32_t end);
 
 Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t end);

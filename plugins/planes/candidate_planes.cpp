@@ -87,7 +87,7 @@ struct PlaneSplit {
   Eigen::Vector3f on_centroid_m = Eigen::Vector3f::Zero();
 };
 
-PlaneSplit split_by_plane(const Candidate& candidate, const PlaneModel& model, float distance_m) {
+PlaneSplit split_by_plane(const Candidate& candidate, const algo::Plane& model, float distance_m) {
   PlaneSplit split;
   Eigen::Vector3d on_sum = Eigen::Vector3d::Zero();
   std::size_t on_count = 0;
@@ -106,7 +106,7 @@ PlaneSplit split_by_plane(const Candidate& candidate, const PlaneModel& model, f
 
 // Two fits of one patch that are the same plane (within `angle_cos` and `distance_m` at the
 // second fit's centroid): the second saw the first one's noisy fringe, not a plane of its own.
-bool same_plane(const PlaneModel& a, const PlaneModel& b, const Eigen::Vector3f& b_centroid,
+bool same_plane(const algo::Plane& a, const algo::Plane& b, const Eigen::Vector3f& b_centroid,
                 float angle_cos, float distance_m) {
   return std::abs(a.normal.dot(b.normal)) >= angle_cos &&
          std::abs(a.signed_distance_m(b_centroid.data())) <= distance_m;
@@ -116,16 +116,17 @@ bool same_plane(const PlaneModel& a, const PlaneModel& b, const Eigen::Vector3f&
 
 std::vector<CandidatePlane> find_candidate_planes(const cv::Mat& labels, const cv::Mat& xyz,
                                                   std::int32_t count, const CandidateRule& rule,
-                                                  const PlaneFitRule& fit_rule, std::mt19937& rng) {
+                                                  const algo::RansacPlaneRule& fit_rule,
+                                                  std::mt19937& rng) {
   std::vector<Candidate> candidates =
       collect_candidates(labels, xyz, count, rule.min_px, rule.max_candidates, rule.max_fit_points);
   std::vector<CandidatePlane> fitted;
   const float off_plane_m = rule.off_plane_m;
   for (auto& candidate : candidates) {
     Candidate part = std::move(candidate);
-    std::optional<PlaneModel> previous;
+    std::optional<algo::Plane> previous;
     for (int plane = 0; plane < rule.planes_per_patch; ++plane) {
-      const auto model = fit_plane(part.points, fit_rule, rng);
+      const auto model = algo::ransac_plane(part.points, fit_rule, rng);
       if (!model) break;
       const Eigen::Vector3f centroid = part.centroid_m();
       if (previous && same_plane(*previous, *model, centroid, rule.same_plane_cos, off_plane_m))

@@ -1,9 +1,9 @@
 #pragma once
 // The first kernel of planes.support: the candidate planes of a frame. Every surface patch of at
 // least min_px valid points is a candidate (largest first, at most max_candidates); a plane is
-// fitted to it (plane_fit.hpp). A patch may hold more than one plane: where no normal edge parts
-// them (a far table running into the wall behind it, seen at a grazing angle), one patch spans
-// both. What a fit leaves clearly off its plane, when it is a candidate's worth of pixels, is
+// fitted to it (algo::ransac_plane). A patch may hold more than one plane: where no normal edge
+// parts them (a far table running into the wall behind it, seen at a grazing angle), one patch
+// spans both. What a fit leaves clearly off its plane, when it is a candidate's worth of pixels, is
 // fitted again, up to planes_per_patch planes.
 
 #include <Eigen/Core>
@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "planes/plane_fit.hpp"
+#include "facet/algo/plane.hpp"
 
 namespace facet::planes {
 
@@ -26,7 +26,7 @@ struct CandidateRule {
 };
 
 struct CandidatePlane {
-  PlaneModel model;
+  algo::Plane model;
   std::int64_t size_px = 0;  // pixels of the patch (or, after a split, on this plane)
   Eigen::Vector3f centroid_m = Eigen::Vector3f::Zero();  // of the points fitted
 };
@@ -36,6 +36,7 @@ struct CandidatePlane {
 // larger patch before a smaller, a lower id before a higher). `rng` is advanced by the fits.
 std::vector<CandidatePlane> find_candidate_planes(const cv::Mat& labels, const cv::Mat& xyz,
                                                   std::int32_t count, const CandidateRule& rule,
-                                                  const PlaneFitRule& fit_rule, std::mt19937& rng);
+                                                  const algo::RansacPlaneRule& fit_rule,
+                                                  std::mt19937& rng);
 
 }  // namespace facet::planes

@@ -30,7 +30,7 @@ struct JoinRule {
 }  // namespace
 
 PlaneAssignment assign_to_planes(const cv::Mat& patch_labels, std::int32_t patch_count,
-                                 const cv::Mat& xyz, const std::vector<PlaneModel>& planes,
+                                 const cv::Mat& xyz, const std::vector<algo::Plane>& planes,
                                  const std::vector<PlaneRole>& roles, int table,
                                  const AssignmentRule& rule, cv::Mat& plane_labels,
                                  cv::Mat& left_labels) {

@@ -19,8 +19,8 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
+#include "facet/algo/plane.hpp"
 #include "facet/types/geometry.hpp"
-#include "planes/plane_fit.hpp"
 
 namespace facet::planes {
 
@@ -50,7 +50,7 @@ struct PlaneAssignment {
 // `left_labels` (the patch id a pixel keeps, 0 = joined a plane or no patch), both created as
 // CV_32SC1 of the labels' size.
 PlaneAssignment assign_to_planes(const cv::Mat& patch_labels, std::int32_t patch_count,
-                                 const cv::Mat& xyz, const std::vector<PlaneModel>& planes,
+                                 const cv::Mat& xyz, const std::vector<algo::Plane>& planes,
                                  const std::vector<PlaneRole>& roles, int table,
                                  const AssignmentRule& rule, cv::Mat& plane_labels,
                                  cv::Mat& left_labels);

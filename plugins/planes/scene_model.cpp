@@ -16,7 +16,7 @@ struct Level {
 // Horizontal candidates grouped into levels, largest candidate first; each level's seed is its
 // largest member. A candidate joins the first level whose seed plane passes within tolerance of
 // its centroid.
-std::vector<Level> group_levels(const std::vector<PlaneModel>& candidates,
+std::vector<Level> group_levels(const std::vector<algo::Plane>& candidates,
                                 const std::vector<Eigen::Vector3f>& centroids_m,
                                 const std::vector<std::int64_t>& sizes_px,
                                 const Eigen::Vector3f& up, const TableRule& rule) {
@@ -50,7 +50,7 @@ std::vector<Level> group_levels(const std::vector<PlaneModel>& candidates,
 
 }  // namespace
 
-TableChoice choose_table(const std::vector<PlaneModel>& candidates,
+TableChoice choose_table(const std::vector<algo::Plane>& candidates,
                          const std::vector<Eigen::Vector3f>& centroids_m,
                          const std::vector<std::int64_t>& sizes_px, std::int64_t valid_px,
                          const Eigen::Vector3f& up, const TableRule& rule) {

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "planes/plane_fit.hpp"
+#include "facet/algo/plane.hpp"
 
 namespace facet::planes {
 
@@ -46,7 +46,7 @@ struct TableChoice {
 
 // candidates, their centroids (camera frame, metres) and sizes (pixels) in the order of
 // planes.support (largest first); `up` is world up (unit); valid_px the frame's valid pixels.
-TableChoice choose_table(const std::vector<PlaneModel>& candidates,
+TableChoice choose_table(const std::vector<algo::Plane>& candidates,
                          const std::vector<Eigen::Vector3f>& centroids_m,
                          const std::vector<std::int64_t>& sizes_px, std::int64_t valid_px,
                          const Eigen::Vector3f& up, const TableRule& rule);

@@ -45,7 +45,7 @@ std::int64_t estimate_valid_px(const cv::Mat& xyz) {
 // The accepted candidates in candidate order, with their role in the scene model and the
 // index of the table's plane among them (-1: none).
 struct AcceptedPlanes {
-  std::vector<PlaneModel> models;
+  std::vector<algo::Plane> models;
   std::vector<PlaneRole> roles;
   int table = -1;
 };
@@ -57,7 +57,7 @@ AcceptedPlanes accepted_planes(const std::vector<CandidatePlane>& candidates,
   AcceptedPlanes out;
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     if (!evidence[c].accepted) continue;
-    const PlaneModel& model = candidates[c].model;
+    const algo::Plane& model = candidates[c].model;
     out.models.push_back(model);
     const bool horizontal = model.normal.dot(up) >= min_cos_horizontal;
     if (table.table >= 0 && table.roles[c] == CandidateRole::table) {
@@ -303,7 +303,7 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
                   static_cast<float>(params.get_double("split_growth_start_m"))),
       seed_(static_cast<std::uint32_t>(params.get_int("seed"))) {
   const auto distance_m = static_cast<float>(params.get_double("distance_m"));
-  fit_rule_.ransac_iterations = static_cast<int>(params.get_int("ransac_iterations"));
+  fit_rule_.iterations = static_cast<int>(params.get_int("ransac_iterations"));
   fit_rule_.inlier_distance_m = distance_m / 2.0F;
   support_rule_.inlier_distance_m = distance_m;
   support_rule_.behind_margin_m = static_cast<float>(params.get_double("behind_margin_m"));
@@ -351,7 +351,7 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   std::mt19937 rng(seed_);
   const std::vector<CandidatePlane> candidates =
       find_candidate_planes(labels, xyz, patches.count, candidate_rule_, fit_rule_, rng);
-  std::vector<PlaneModel> models;
+  std::vector<algo::Plane> models;
   std::vector<std::int64_t> sizes;
   std::vector<Eigen::Vector3f> centroids;
   for (const CandidatePlane& candidate : candidates) {

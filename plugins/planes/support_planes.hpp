@@ -8,10 +8,10 @@
 
 #include "facet/algo/label_pieces.hpp"
 #include "facet/algo/neighbour_gate.hpp"
+#include "facet/algo/plane.hpp"
 #include "facet/stage.hpp"
 #include "planes/candidate_planes.hpp"
 #include "planes/plane_assignment.hpp"
-#include "planes/plane_fit.hpp"
 #include "planes/scene_model.hpp"
 #include "planes/support_rule.hpp"
 
@@ -30,7 +30,7 @@ class SupportPlaneStage final : public Stage {
   // The four kernels: candidate planes, the table (scene model), the support decision, and the
   // assignment of the points to the accepted planes.
   CandidateRule candidate_rule_;
-  PlaneFitRule fit_rule_;
+  algo::RansacPlaneRule fit_rule_;
   TableRule table_rule_;
   SupportRule support_rule_;
   AssignmentRule assignment_rule_;

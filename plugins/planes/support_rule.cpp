@@ -14,7 +14,7 @@ struct SampleBits {
   std::vector<std::uint32_t> behind;
 };
 
-SampleBits classify_samples(const cv::Mat& points, const std::vector<PlaneModel>& candidates,
+SampleBits classify_samples(const cv::Mat& points, const std::vector<algo::Plane>& candidates,
                             const SupportRule& rule) {
   SampleBits bits;
   const int stride = std::max(1, rule.sample_stride_px);
@@ -44,7 +44,7 @@ SampleBits classify_samples(const cv::Mat& points, const std::vector<PlaneModel>
 }  // namespace
 
 std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
-                                              const std::vector<PlaneModel>& candidates, int table,
+                                              const std::vector<algo::Plane>& candidates, int table,
                                               const std::vector<CandidateRole>& roles,
                                               const Eigen::Vector3f& up, const SupportRule& rule) {
   if (candidates.size() > 32) throw std::invalid_argument("at most 32 candidate planes");

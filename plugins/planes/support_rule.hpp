@@ -17,7 +17,7 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
-#include "planes/plane_fit.hpp"
+#include "facet/algo/plane.hpp"
 #include "planes/scene_model.hpp"
 
 namespace facet::planes {
@@ -45,7 +45,7 @@ struct CandidateEvidence {
 // or -1 (scene_model.hpp); the candidates whose role is table are accepted from the start, object
 // tops never, the undecided ones by the rule above. `up` is world up (unit, camera frame).
 std::vector<CandidateEvidence> decide_support(const cv::Mat& points,
-                                              const std::vector<PlaneModel>& candidates, int table,
+                                              const std::vector<algo::Plane>& candidates, int table,
                                               const std::vector<CandidateRole>& roles,
                                               const Eigen::Vector3f& up, const SupportRule& rule);
 

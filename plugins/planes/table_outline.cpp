@@ -42,7 +42,7 @@ std::vector<Point2> convex_hull(std::vector<Point2> points) {
 std::vector<Eigen::Vector3d> table_outline(const cv::Mat& plane_labels, const cv::Mat& patch_labels,
                                            const std::vector<char>& table_patches,
                                            const cv::Mat& xyz, const std::vector<char>& table_ids,
-                                           const PlaneModel& table, const Eigen::Vector3f& up,
+                                           const algo::Plane& table, const Eigen::Vector3f& up,
                                            int stride_px) {
   // A right-handed basis of the table plane, seen from above: e1 x e2 = n (n faces up).
   const Eigen::Vector3d n = table.normal.cast<double>();

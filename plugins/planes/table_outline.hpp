@@ -10,7 +10,7 @@
 #include <opencv2/core/mat.hpp>
 #include <vector>
 
-#include "planes/plane_fit.hpp"
+#include "facet/algo/plane.hpp"
 
 namespace facet::planes {
 
@@ -28,7 +28,7 @@ namespace facet::planes {
 std::vector<Eigen::Vector3d> table_outline(const cv::Mat& plane_labels, const cv::Mat& patch_labels,
                                            const std::vector<char>& table_patches,
                                            const cv::Mat& xyz, const std::vector<char>& table_ids,
-                                           const PlaneModel& table, const Eigen::Vector3f& up,
+                                           const algo::Plane& table, const Eigen::Vector3f& up,
                                            int stride_px);
 
 }  // namespace facet::planes

@@ -22,8 +22,8 @@ std::optional<Eigen::Vector3f> parse_up(const std::string& text) {
   return up.normalized();
 }
 
-int dominant_horizontal(const std::vector<PlaneModel>& candidates, const Eigen::Vector3f& reference,
-                        double max_angle_deg) {
+int dominant_horizontal(const std::vector<algo::Plane>& candidates,
+                        const Eigen::Vector3f& reference, double max_angle_deg) {
   const double min_cos = std::cos(max_angle_deg * std::numbers::pi / 180.0);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (candidates[i].normal.dot(reference) >= min_cos) return static_cast<int>(i);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "planes/plane_fit.hpp"
+#include "facet/algo/plane.hpp"
 
 namespace facet::planes {
 
@@ -16,7 +16,7 @@ std::optional<Eigen::Vector3f> parse_up(const std::string& text);
 
 // The index of the dominant horizontal candidate: the first (largest) one whose normal is within
 // max_angle_deg of `reference` (the given world up, or the camera's up -y as a prior); -1 if none.
-int dominant_horizontal(const std::vector<PlaneModel>& candidates, const Eigen::Vector3f& reference,
-                        double max_angle_deg);
+int dominant_horizontal(const std::vector<algo::Plane>& candidates,
+                        const Eigen::Vector3f& reference, double max_angle_deg);
 
 }  // namespace facet::planes

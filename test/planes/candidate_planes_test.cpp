@@ -51,7 +51,7 @@ CandidateRule rule_for_the_frame() {
 std::vector<CandidatePlane> find(const Frame& frame, std::int32_t count,
                                  const CandidateRule& rule) {
   std::mt19937 rng(1);
-  return find_candidate_planes(frame.labels, frame.xyz, count, rule, PlaneFitRule{}, rng);
+  return find_candidate_planes(frame.labels, frame.xyz, count, rule, algo::RansacPlaneRule{}, rng);
 }
 
 void expect_table(const CandidatePlane& plane) {

@@ -57,7 +57,7 @@ struct Frame {
   }
 };
 
-const PlaneModel kTablePlane{Eigen::Vector3f(0.0F, -1.0F, 0.0F), 0.5F};
+const algo::Plane kTablePlane{Eigen::Vector3f(0.0F, -1.0F, 0.0F), 0.5F};
 
 struct Result {
   PlaneAssignment assignment;

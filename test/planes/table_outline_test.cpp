@@ -10,7 +10,7 @@
 
 namespace {
 
-using facet::planes::PlaneModel;
+using facet::algo::Plane;
 using facet::planes::table_outline;
 
 // Camera frame, y down: the table plane y = 0.5 m (normal up, -y). The left half of the image is
@@ -52,7 +52,7 @@ float max_abs_x(const std::vector<Eigen::Vector3d>& outline) {
 
 TEST(TableOutline, OnlyTheTablesPatchesOutlineIt) {
   const Frame frame;
-  const PlaneModel table{Eigen::Vector3f(0.0F, -1.0F, 0.0F), 0.5F};
+  const Plane table{Eigen::Vector3f(0.0F, -1.0F, 0.0F), 0.5F};
   const Eigen::Vector3f up(0.0F, -1.0F, 0.0F);
   const std::vector<char> table_ids = {0, 1};
   const std::vector<char> table_patch_only = {0, 1, 0};

@@ -1,0 +1,124 @@
+// algo::Plane and its fits: total least squares through points (PlaneMoments) and RANSAC with a
+// least-squares refit, on exact and noisy planes, far from the camera, with outliers, and on
+// degenerate point sets.
+#include "facet/algo/plane.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace facet::algo {
+namespace {
+
+// Points on the plane through `centre_m` with unit normal `normal`, on a grid of side `side_m`,
+// displaced along the normal by Gaussian noise of `noise_m`.
+std::vector<float> plane_points(const Eigen::Vector3f& normal, const Eigen::Vector3f& centre_m,
+                                float side_m, int per_side, float noise_m, std::mt19937& rng) {
+  const Eigen::Vector3f u = normal.unitOrthogonal();
+  const Eigen::Vector3f v = normal.cross(u);
+  std::normal_distribution<float> noise(0.0F, noise_m);
+  std::vector<float> xyz;
+  for (int i = 0; i < per_side; ++i) {
+    for (int j = 0; j < per_side; ++j) {
+      const float a = side_m * (static_cast<float>(i) / static_cast<float>(per_side - 1) - 0.5F);
+      const float b = side_m * (static_cast<float>(j) / static_cast<float>(per_side - 1) - 0.5F);
+      const Eigen::Vector3f p =
+          centre_m + a * u + b * v + (noise_m > 0.0F ? noise(rng) : 0.0F) * normal;
+      xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+    }
+  }
+  return xyz;
+}
+
+TEST(Plane, ThroughAPointFacesTheCamera) {
+  const Eigen::Vector3f point(0.1F, 0.2F, 1.5F);
+  // Given a normal pointing away from the camera, the plane turns it round.
+  const Plane plane = Plane::through(Eigen::Vector3f::UnitZ(), point);
+  EXPECT_EQ(plane.normal, -Eigen::Vector3f::UnitZ());
+  EXPECT_FLOAT_EQ(plane.offset_m, 1.5F);
+  EXPECT_FLOAT_EQ(plane.signed_distance_m(point.data()), 0.0F);
+  EXPECT_GT(plane.signed_distance_m(0.0F, 0.0F, 1.0F), 0.0F);  // the camera's side: in front
+}
+
+TEST(PlaneMoments, LeastSquaresFindsATiltedPlaneAndItsCentroid) {
+  std::mt19937 rng(3);
+  const Eigen::Vector3f normal = Eigen::Vector3f(0.2F, -0.9F, -0.4F).normalized();
+  const Eigen::Vector3f centre(0.1F, 0.3F, 1.2F);
+  const std::vector<float> xyz = plane_points(normal, centre, 0.4F, 40, 0.0F, rng);
+  PlaneMoments moments;
+  for (std::size_t i = 0; i < xyz.size(); i += 3)
+    moments.add(xyz[i], xyz[i + 1], xyz[i + 2]);
+  EXPECT_EQ(moments.count(), 1600);
+  EXPECT_LT((moments.centroid_m().cast<float>() - centre).norm(), 1e-5F);
+  const auto plane = moments.plane();
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_GT(plane->normal.dot(normal), 1.0F - 1e-6F);
+  EXPECT_NEAR(plane->offset_m, -normal.dot(centre), 1e-5F);
+  EXPECT_GT(plane->offset_m, 0.0F);
+}
+
+TEST(PlaneMoments, AFarCentimetrePatchStillGivesItsPlane) {
+  // A 1 cm square 4 m away, its points in float (0.5 µm steps there): the plane passes through
+  // the patch within a micrometre, its normal within 0.06 degrees, so its distance from the
+  // camera within 0.1 mm.
+  std::mt19937 rng(5);
+  const Eigen::Vector3f normal = Eigen::Vector3f(0.0F, -0.6F, -0.8F).normalized();
+  const Eigen::Vector3f centre(0.5F, 0.8F, 4.0F);
+  const auto plane = least_squares_plane(plane_points(normal, centre, 0.01F, 20, 0.0F, rng));
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_LT(std::abs(plane->signed_distance_m(centre.data())), 1e-6F);
+  EXPECT_GT(plane->normal.dot(normal), std::cos(1e-3F));
+  EXPECT_NEAR(plane->offset_m, -normal.dot(centre), 1e-4F);
+}
+
+TEST(PlaneMoments, NoPlaneThroughTooFewOrCollinearPoints) {
+  EXPECT_FALSE(least_squares_plane(std::vector<float>{}).has_value());
+  EXPECT_FALSE(least_squares_plane(std::vector<float>{0, 0, 1, 0.1F, 0, 1}).has_value());
+  std::vector<float> line;
+  for (int i = 0; i < 50; ++i)
+    line.insert(line.end(), {0.01F * static_cast<float>(i), 0.2F, 1.0F});
+  EXPECT_FALSE(least_squares_plane(line).has_value());
+  const std::vector<float> one_point(30, 1.0F);
+  EXPECT_FALSE(least_squares_plane(one_point).has_value());
+}
+
+TEST(RansacPlane, FindsTheTableAmongOutliersAndRefitsItsNoise) {
+  std::mt19937 scene(7);
+  const Eigen::Vector3f normal = Eigen::Vector3f(0.0F, -0.85F, -0.53F).normalized();
+  const Eigen::Vector3f centre(0.0F, 0.4F, 1.3F);
+  std::vector<float> xyz = plane_points(normal, centre, 0.8F, 50, 0.001F, scene);
+  // 30 % of the points scattered 5-30 cm in front of the table.
+  std::uniform_real_distribution<float> spread(-0.4F, 0.4F);
+  std::uniform_real_distribution<float> height(0.05F, 0.3F);
+  for (int i = 0; i < 1070; ++i) {
+    const Eigen::Vector3f p = centre + spread(scene) * normal.unitOrthogonal() +
+                              spread(scene) * normal.cross(normal.unitOrthogonal()) +
+                              height(scene) * normal;
+    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  }
+  std::mt19937 rng(1);
+  const auto plane = ransac_plane(xyz, RansacPlaneRule{}, rng);
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_GT(plane->normal.dot(normal), std::cos(0.5F * 3.14159265F / 180.0F));
+  EXPECT_NEAR(plane->offset_m, -normal.dot(centre), 0.001F);
+  // The same seed, the same plane.
+  std::mt19937 again(1);
+  const auto repeated = ransac_plane(xyz, RansacPlaneRule{}, again);
+  ASSERT_TRUE(repeated.has_value());
+  EXPECT_EQ(repeated->normal, plane->normal);
+  EXPECT_EQ(repeated->offset_m, plane->offset_m);
+}
+
+TEST(RansacPlane, NothingFromDegeneratePoints) {
+  std::mt19937 rng(1);
+  EXPECT_FALSE(ransac_plane(std::vector<float>{0, 0, 1, 1, 0, 1}, RansacPlaneRule{}, rng));
+  // Every triple is one point: no hypothesis.
+  const std::vector<float> one_point(300, 1.0F);
+  EXPECT_FALSE(ransac_plane(one_point, RansacPlaneRule{}, rng).has_value());
+}
+
+}  // namespace
+}  // namespace facet::algo
