@@ -383,7 +383,6 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   // What is left for objects: patches minus plane points, minus segments too small to matter.
   LabelImage remaining;
   static_cast<FrameHeader&>(remaining) = patches;
-  remaining.count = patches.count;
   const PlaneAssignment assignment =
       assign_to_planes(labels, patches.count, xyz, accepted.models, accepted.roles, accepted.table,
                        assignment_rule_, plane_labels.labels, remaining.labels);

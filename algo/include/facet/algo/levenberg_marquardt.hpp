@@ -125,8 +125,6 @@ class LevenbergMarquardt {
     return summary;
   }
 
-  const SolverOptions& options() const { return options_; }
-
  private:
   SolverOptions options_;
 };
