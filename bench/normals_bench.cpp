@@ -55,6 +55,13 @@ void BM_CrossImageDisparity(benchmark::State& state) {
 }
 BENCHMARK(BM_CrossImageDisparity)->Unit(benchmark::kMicrosecond);
 
+// The graphs' setting: one-sided tangents beside holes (a second pass over the NaN pixels).
+void BM_CrossImageDisparityOneSided(benchmark::State& state) {
+  run_stage<CrossStage>(
+      state, {{"space", std::string("image")}, {"holes", std::string("one_sided")}}, "normals");
+}
+BENCHMARK(BM_CrossImageDisparityOneSided)->Unit(benchmark::kMicrosecond);
+
 void BM_CrossImageMm(benchmark::State& state) {
   run_stage<CrossStage>(
       state, {{"space", std::string("image")}, {"image_depth", std::string("mm")}}, "normals");

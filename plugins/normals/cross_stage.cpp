@@ -13,8 +13,9 @@ StageSpec CrossStage::spec() {
       "The paper's method (section II-A a): n = (B - A) x (C - A) for three pixels around p, "
       "normalised and oriented towards the camera. Computed in image space (the paper's: pixel "
       "grid augmented by depth, for edge detection) or metric space (true 3D normals). A pixel "
-      "gets no normal (NaN) when it or any neighbour used has no depth, or when a neighbour would "
-      "lie outside the image. Optionally the normals are box-averaged afterwards; without "
+      "gets no normal (NaN) when it has no depth or a neighbour would lie outside the image, and "
+      "when a neighbour used has no depth unless `holes` is one_sided. Optionally the normals are "
+      "box-averaged afterwards; without "
       "renormalisation the averaged vectors are shorter where normals disagree.");
   spec.input<DepthImage>("depth",
                          "Depth image, CV_16UC1 in mm (0 = invalid) or CV_32FC1 in m (0 or NaN = "
@@ -33,6 +34,16 @@ StageSpec CrossStage::spec() {
              "((x+r, y) - (x-r, y)) x ((x, y+r) - (x, y-r)).",
              {.choices = {std::string("paper"), std::string("centred")},
               .origin = "paper (Fig. 2); the authors' later code uses the same triangle"})
+      .param("holes", "none",
+             "What a pixel with depth gets when a neighbour of its triangle has none. none: no "
+             "normal (NaN). one_sided: the normal of the first one-sided tangent pair that avoids "
+             "the hole, (p to (x+r, y) or (x-r, y)) x (p to (x, y+r) or (x, y-r)), tried "
+             "right-below, left-below, right-above, left-above; NaN only when all four meet a "
+             "hole. A one-pixel dropout line along an object's outline then stays one pixel wide "
+             "instead of r pixels wider on each side.",
+             {.choices = {std::string("none"), std::string("one_sided")},
+              .origin = "paper (none); one_sided measured on the generated development sets "
+                        "(docs/normals.md)"})
       .param("smooth_radius", 0,
              "Radius R of a box average of the normals over (2R+1)^2 pixels, over valid normals "
              "only (0 = off).",
@@ -57,12 +68,19 @@ Triangle triangle_from(const std::string& name) {
   throw StageError("unknown triangle '" + name + "' (paper, centred)");
 }
 
+HoleNormals hole_normals_from(const std::string& name) {
+  if (name == "none") return HoleNormals::none;
+  if (name == "one_sided") return HoleNormals::one_sided;
+  throw StageError("unknown holes '" + name + "' (none, one_sided)");
+}
+
 }  // namespace
 
 CrossStage::CrossStage(const Params& params)
     : space_(depth_space_from(params)),
       options_{static_cast<int>(params.get_int("radius")),
-               triangle_from(params.get_string("triangle"))},
+               triangle_from(params.get_string("triangle")),
+               hole_normals_from(params.get_string("holes"))},
       smooth_radius_px_(static_cast<int>(params.get_int("smooth_radius"))),
       smoother_(smooth_radius_px_, params.get_bool("renormalize")) {}
 

@@ -2,6 +2,7 @@
 // space, and the smoothing options.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -105,6 +106,67 @@ TEST_P(CrossValidity, InvalidValuesDoNotMatter) {
   for (std::size_t i = 1; i < results.size(); ++i) {
     EXPECT_EQ(count_differences(results[0], results[i]), 0) << "marker " << i;
   }
+}
+
+// holes: one_sided. A pixel with depth whose triangle meets a hole takes the first one-sided
+// tangent pair whose pixels all have depth; it stays without a normal only when none has. Every
+// pixel the triangle served alone keeps exactly the normal it had.
+TEST_P(CrossValidity, OneSidedNormalsBesideHolesExactlyWhereAPairIsValid) {
+  const auto [space, triangle] = GetParam();
+  const auto scene = plane_with_holes();
+  const StageParams base{{"space", std::string(space)},
+                         {"triangle", std::string(triangle)},
+                         {"radius", std::int64_t{kRadius}}};
+  StageParams one_sided = base;
+  one_sided["holes"] = std::string("one_sided");
+  const cv::Mat plain = run_normals<CrossStage>(scene.depth_mm_image(), base);
+  const cv::Mat filled = run_normals<CrossStage>(scene.depth_mm_image(), one_sided);
+
+  const cv::Rect image(0, 0, filled.cols, filled.rows);
+  const auto valid = [&](cv::Point p) {
+    return image.contains(p) && scene.depth_m.at<float>(p) > 0.0F;
+  };
+  int wrong = 0;
+  int changed = 0;
+  int gained = 0;
+  for (int v = kRadius; v < filled.rows - kRadius; ++v) {
+    for (int u = kRadius; u < filled.cols - kRadius; ++u) {
+      if (has_normal(plain, v, u)) {
+        changed += filled.at<cv::Vec3f>(v, u) != plain.at<cv::Vec3f>(v, u) ? 1 : 0;
+        continue;
+      }
+      const bool horizontal = valid({u + kRadius, v}) || valid({u - kRadius, v});
+      const bool vertical = valid({u, v + kRadius}) || valid({u, v - kRadius});
+      const bool expected = valid({u, v}) && horizontal && vertical;
+      wrong += has_normal(filled, v, u) != expected ? 1 : 0;
+      gained += expected ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(changed, 0);
+  EXPECT_GT(gained, 500);  // the ring around the rectangle, the single holes and the hole row
+}
+
+// On a plane, a one-sided normal is the plane's normal: in metric space every normal of the
+// plane agrees, beside the holes as well as away from them.
+TEST(CrossStage, OneSidedNormalsBesideHolesLieOnThePlane) {
+  const auto scene = plane_with_holes();
+  const StageParams params{{"space", std::string("metric")}, {"holes", std::string("one_sided")}};
+  const cv::Mat normals = run_normals<CrossStage>(scene.depth_m_image(), params);
+  const cv::Mat plain =
+      run_normals<CrossStage>(scene.depth_m_image(), {{"space", std::string("metric")}});
+  const Eigen::Vector3d reference = normal_at(plain, 400, 300);
+  int beside_holes = 0;
+  double worst_deg = 0.0;
+  for (int v = 0; v < normals.rows; ++v) {
+    for (int u = 0; u < normals.cols; ++u) {
+      if (!has_normal(normals, v, u) || has_normal(plain, v, u)) continue;
+      worst_deg = std::max(worst_deg, angle_deg(normal_at(normals, v, u), reference));
+      ++beside_holes;
+    }
+  }
+  EXPECT_GT(beside_holes, 500);
+  EXPECT_LT(worst_deg, 0.5);
 }
 
 INSTANTIATE_TEST_SUITE_P(SpacesAndTriangles, CrossValidity,
