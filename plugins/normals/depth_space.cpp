@@ -52,54 +52,34 @@ void convert(const cv::Mat& depth, const DepthSpace& space, float to_m, cv::Mat&
 
 }  // namespace
 
-StageSpec& add_depth_space_params(StageSpec& spec) {
-  return spec
-      .param("space", "image",
-             "Space the normals are computed in. image: the paper's, the pixel grid augmented "
-             "by depth, points (u px, v px, scaled depth); its normals are for edge detection "
-             "(angles between neighbouring normals), not 3D directions. metric: true 3D "
-             "normals of the back-projected points (needs the intrinsics).",
-             {.choices = {std::string("image"), std::string("metric")},
-              .origin = "paper (normals on the depth image, not the point cloud); in the "
-                        "project's prototype on the 45 mOSD learn frames, image space scored "
-                        "F 0.950 and metric 0.943, each at its best edge threshold"})
-      .param("image_depth", "disparity",
-             "Unit of depth in image space. disparity: the raw Kinect v1 disparity computed "
-             "from depth, raw = (3.3309495161 - 1046 / depth_mm) / 0.0030711016, times "
-             "width / 320 (keeps the slopes of the authors' 320x240 images); mm: "
-             "millimetres. Ignored in metric space.",
-             {.choices = {std::string("disparity"), std::string("mm")},
-              .origin = "authors' later code (raw 11-bit disparity at 320x240, where the paper's "
-                        "edge threshold 0.85 was tuned)"})
-      .param("depth_scale", 1.0,
-             "Factor on the image-space depth unit: larger makes surfaces look steeper and "
-             "normal edges stronger. Ignored in metric space.",
-             {.min = 0.01,
-              .max = 100.0,
-              .origin = "1: the unit as defined by image_depth, no extra scaling"});
-}
-
-DepthSpace depth_space_from(const Params& params) {
-  DepthSpace space;
-  const std::string& name = params.get_string("space");
-  if (name == "image") {
-    space.space = Space::image;
-  } else if (name == "metric") {
-    space.space = Space::metric;
-  } else {
-    throw StageError("unknown space '" + name + "' (image, metric)");
-  }
-  const std::string& unit = params.get_string("image_depth");
-  if (unit == "disparity") {
-    space.image_depth = ImageDepth::disparity;
-  } else if (unit == "mm") {
-    space.image_depth = ImageDepth::mm;
-  } else {
-    throw StageError("unknown image_depth '" + unit + "' (disparity, mm)");
-  }
-  space.depth_scale = params.get_double("depth_scale");
-  return space;
-}
+const DepthSpaceParams kDepthSpaceParams{
+    EnumParam<Space>{
+        "space",
+        Space::image,
+        {{Space::image, "image"}, {Space::metric, "metric"}},
+        "Space the normals are computed in. image: the paper's, the pixel grid augmented by "
+        "depth, points (u px, v px, scaled depth); its normals are for edge detection (angles "
+        "between neighbouring normals), not 3D directions. metric: true 3D normals of the "
+        "back-projected points (needs the intrinsics).",
+        {.origin = "paper (normals on the depth image, not the point cloud); in the project's "
+                   "prototype on the 45 mOSD learn frames, image space scored F 0.950 and metric "
+                   "0.943, each at its best edge threshold"}},
+    EnumParam<ImageDepth>{
+        "image_depth",
+        ImageDepth::disparity,
+        {{ImageDepth::disparity, "disparity"}, {ImageDepth::mm, "mm"}},
+        "Unit of depth in image space. disparity: the raw Kinect v1 disparity computed from "
+        "depth, raw = (3.3309495161 - 1046 / depth_mm) / 0.0030711016, times width / 320 (keeps "
+        "the slopes of the authors' 320x240 images); mm: millimetres. Ignored in metric space.",
+        {.origin = "authors' later code (raw 11-bit disparity at 320x240, where the paper's edge "
+                   "threshold 0.85 was tuned)"}},
+    Param<double>{"depth_scale",
+                  1.0,
+                  "Factor on the image-space depth unit: larger makes surfaces look steeper and "
+                  "normal edges stronger. Ignored in metric space.",
+                  {.min = 0.01,
+                   .max = 100.0,
+                   .origin = "1: the unit as defined by image_depth, no extra scaling"}}};
 
 void depth_to_z(const cv::Mat& depth, const DepthSpace& space, cv::Mat& z) {
   if (depth.type() != CV_16UC1 && depth.type() != CV_32FC1) {

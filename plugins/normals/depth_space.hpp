@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "facet/contract.hpp"
 #include "facet/stage_spec.hpp"
 #include "facet/types/frame.hpp"
 
@@ -44,10 +45,19 @@ inline double kinect_raw_disparity(double depth_mm) {
   return (kKinectDisparityOffset - kKinectDisparityMm / depth_mm) / kKinectDisparityFactor;
 }
 
-// Adds the `space`, `image_depth` and `depth_scale` parameters to a normals stage's spec.
-StageSpec& add_depth_space_params(StageSpec& spec);
-// Reads them back; throws StageError for an unknown choice.
-DepthSpace depth_space_from(const Params& params);
+// The `space`, `image_depth` and `depth_scale` parameters every normals stage shares:
+// `spec.declare(kDepthSpaceParams)` declares them, `kDepthSpaceParams(params)` reads them.
+struct DepthSpaceParams {
+  EnumParam<Space> space;
+  EnumParam<ImageDepth> image_depth;
+  Param<double> depth_scale;
+
+  void declare_in(StageSpec& spec) const { spec.declare(space, image_depth, depth_scale); }
+  DepthSpace operator()(const Params& params) const {
+    return {space(params), image_depth(params), depth_scale(params)};
+  }
+};
+extern const DepthSpaceParams kDepthSpaceParams;
 
 // Third coordinate of every pixel in `space`, as CV_32FC1; NaN where the depth is invalid
 // (0 or NaN in the input, or not positive). Metric: metres. Image: the scaled unit above.

@@ -22,7 +22,7 @@ StageSpec PcaStage::spec() {
                            "CV_32FC3 unit normals, same size and header as the input, oriented "
                            "towards the camera, NaN = no normal. In image space the components "
                            "are in (px, px, scaled depth) space.");
-  add_depth_space_params(spec);
+  spec.declare(kDepthSpaceParams);
   spec.param("window", 5, "Side length k of the square window (odd).",
              {.unit = "px",
               .min = 3.0,
@@ -50,7 +50,7 @@ PcaOptions pca_options_from(const Params& params) {
 }  // namespace
 
 PcaStage::PcaStage(const Params& params)
-    : space_(depth_space_from(params)), pca_(pca_options_from(params)) {}
+    : space_(kDepthSpaceParams(params)), pca_(pca_options_from(params)) {}
 
 void PcaStage::process(ProcessContext& ctx) {
   const auto& input = ctx.input<DepthImage>("depth");

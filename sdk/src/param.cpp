@@ -113,6 +113,7 @@ std::optional<std::string> check_param_value(const ParamSpec& spec, const ParamV
     }
     return msg;
   }
+  if (spec.check) return spec.check(value);
   return std::nullopt;
 }
 

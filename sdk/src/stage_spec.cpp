@@ -22,7 +22,11 @@ StageSpec::StageSpec(std::string name, std::string doc)
 
 StageSpec& StageSpec::add_param(std::string name, ParamType type, ParamValue default_value,
                                 std::string doc, ParamOptions opt) {
-  ParamSpec spec{std::move(name), type, std::move(default_value), std::move(doc), std::move(opt)};
+  return add_param(
+      ParamSpec{std::move(name), type, std::move(default_value), std::move(doc), std::move(opt)});
+}
+
+StageSpec& StageSpec::add_param(ParamSpec spec) {
   // A declaration whose own default fails its range is a bug in the stage: fail loudly at load.
   if (const auto error = check_param_value(spec, spec.default_value)) {
     throw std::logic_error("stage '" + name_ + "': default of parameter '" + spec.name +

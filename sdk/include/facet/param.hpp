@@ -2,6 +2,7 @@
 // Stage parameters: their declaration (ParamSpec) and the validated values a stage is built from.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -37,9 +38,13 @@ struct ParamSpec {
   ParamValue default_value;
   std::string doc;
   ParamOptions options;
+  // A check beyond type, range and choices, e.g. the parser of a structured value
+  // (facet::Param<T> with ParamTraits<T>, facet/contract.hpp): an error message or nothing.
+  std::function<std::optional<std::string>(const ParamValue&)> check = {};
 };
 
-// Checks `value` against `spec` (type, range, choices). Returns an error message or nothing.
+// Checks `value` against `spec` (type, range, choices, its own check). Returns an error message
+// or nothing.
 std::optional<std::string> check_param_value(const ParamSpec& spec, const ParamValue& value);
 
 // Parses the text of a graph file or command line ("5", "0.85", "true") as the spec's type.

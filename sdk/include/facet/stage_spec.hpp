@@ -65,6 +65,18 @@ class StageSpec {
   StageSpec& param(std::string name, std::string default_value, std::string doc,
                    ParamOptions opt = {});
 
+  // Declares typed ports and parameters (facet/contract.hpp) in the order given, the order
+  // `facet inspect` lists them in.
+  template <class... Descriptor>
+  StageSpec& declare(const Descriptor&... descriptors) {
+    (descriptors.declare_in(*this), ...);
+    return *this;
+  }
+
+  // A parameter declared whole; the default must pass its own checks (std::logic_error if not:
+  // a bug in the stage, reported when the plugin loads).
+  StageSpec& add_param(ParamSpec param);
+
   StageSpec& concurrency(Concurrency value) {
     concurrency_ = value;
     return *this;
