@@ -2,9 +2,45 @@
 // Tiny in-process stages for the graph tests: enough ports, types and parameter kinds to exercise
 // every validation rule, without loading a plugin. They never run.
 
+#include <charconv>
+#include <facet/contract.hpp>
 #include <facet/framework/registry.hpp>
 #include <facet/stage.hpp>
 #include <facet/types/images.hpp>
+#include <string>
+#include <variant>
+
+namespace facet::graph_test {
+
+// A structured parameter value, written "WxH" (whole millimetres, both positive).
+struct Extent {
+  int width_mm = 0;
+  int height_mm = 0;
+};
+
+}  // namespace facet::graph_test
+
+template <>
+struct facet::ParamTraits<facet::graph_test::Extent> {
+  static std::variant<graph_test::Extent, std::string> parse(std::string_view text) {
+    const auto x = text.find('x');
+    graph_test::Extent extent;
+    const auto width = text.substr(0, x);
+    const auto height = x == std::string_view::npos ? std::string_view() : text.substr(x + 1);
+    const auto read = [](std::string_view part, int& value) {
+      const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+      return ec == std::errc() && end == part.data() + part.size() && value > 0;
+    };
+    if (x == std::string_view::npos || !read(width, extent.width_mm) ||
+        !read(height, extent.height_mm)) {
+      return "expected 'WxH' in whole millimetres, e.g. '300x200', got '" + std::string(text) + "'";
+    }
+    return extent;
+  }
+  static std::string format(const graph_test::Extent& extent) {
+    return std::to_string(extent.width_mm) + "x" + std::to_string(extent.height_mm);
+  }
+};
 
 namespace facet::graph_test {
 
@@ -96,7 +132,22 @@ struct DepthWriter final : NoOpStage {
   }
 };
 
+// Declared with typed contracts, and a structured parameter whose parser validation runs.
+inline const In<DepthImage> kCropDepth{"depth", "Depth image."};
+inline const Out<DepthImage> kCropped{"depth", "The cropped depth image."};
+inline const Param<Extent> kCropExtent{"extent", Extent{640, 480}, "Size of the crop, 'WxH'."};
+
+class CropStage final : public NoOpStage {
+ public:
+  using NoOpStage::NoOpStage;
+  static StageSpec spec() {
+    StageSpec spec("filter.crop", "Crops the depth image.");
+    return spec.declare(kCropDepth, kCropped, kCropExtent);
+  }
+};
+
 inline void add_test_stages(Registry& registry) {
+  registry.add<CropStage>();
   registry.add<FramesSource>();
   registry.add<MedianFilter>();
   registry.add<CrossNormals>();

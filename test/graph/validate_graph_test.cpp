@@ -154,6 +154,31 @@ nodes:
             "of angle, dot\n");
 }
 
+// A structured parameter (facet::Param<T> with ParamTraits<T>) is parsed by validation, so a bad
+// value is reported at its place in the file before any stage is built.
+TEST_F(ValidateGraph, AStructuredValueIsParsedWithItsPlace) {
+  const ValidatedGraph graph = validate(R"(facet: 1
+nodes:
+  s: {stage: io.frames, params: {path: x}}
+  c: {stage: filter.crop, in: {depth: s.depth}, params: {extent: 300x}}
+)");
+  EXPECT_EQ(single_error(diagnostics_),
+            "g.yaml:4:66: parameter 'extent' of node 'c' (string): expected 'WxH' in whole "
+            "millimetres, e.g. '300x200', got '300x'");
+}
+
+TEST_F(ValidateGraph, AStructuredValueThatParsesIsKept) {
+  const ValidatedGraph graph = validate(R"(facet: 1
+nodes:
+  s: {stage: io.frames, params: {path: x}}
+  c: {stage: filter.crop, in: {depth: s.depth}, params: {extent: 300x200}}
+)");
+  ASSERT_FALSE(diagnostics_.has_errors()) << diagnostics_.str();
+  const graph_test::Extent extent = graph_test::kCropExtent(graph.find("c")->params);
+  EXPECT_EQ(extent.width_mm, 300);
+  EXPECT_EQ(extent.height_mm, 200);
+}
+
 TEST_F(ValidateGraph, RequiredParamMustBeSet) {
   validate("facet: 1\nnodes:\n  s: {stage: io.frames}\n");
   EXPECT_EQ(single_error(diagnostics_),

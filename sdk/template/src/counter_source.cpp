@@ -1,31 +1,44 @@
 #include "counter_source.hpp"
 
+#include <cstdint>
+#include <facet/contract.hpp>
 #include <facet/types/images.hpp>
 
 namespace facet_template {
 
+namespace {
+
+const facet::Out<facet::DepthImage> kDepth{"depth", "CV_16UC1 depth in millimetres."};
+const facet::Param<std::int64_t> kFrames{
+    "frames", 5, "Number of images before the end of the stream.", {.min = 0}};
+const facet::Param<int> kWidth{"width", 64, "Image width.", {.unit = "px", .min = 2, .max = 4096}};
+const facet::Param<int> kHeight{
+    "height", 48, "Image height.", {.unit = "px", .min = 1, .max = 4096}};
+const facet::Param<int> kNearMm{
+    "near", 500, "Depth of the left column.", {.unit = "mm", .min = 1, .max = 65535}};
+const facet::Param<int> kFarMm{
+    "far", 2000, "Depth of the right column.", {.unit = "mm", .min = 1, .max = 65535}};
+
+}  // namespace
+
 facet::StageSpec CounterSource::spec() {
   // Everything `facet inspect template.counter` prints and every graph is checked against.
-  return facet::StageSpec("template.counter",
-                          "Emits `frames` synthetic depth images, then ends the stream.\n"
-                          "Depth ramps from `near` at the left column to `far` at the right.")
-      .output<facet::DepthImage>("depth", "CV_16UC1 depth in millimetres.")
-      .param("frames", 5, "Number of images before the end of the stream.", {.min = 0})
-      .param("width", 64, "Image width.", {.unit = "px", .min = 2, .max = 4096})
-      .param("height", 48, "Image height.", {.unit = "px", .min = 1, .max = 4096})
-      .param("near", 500, "Depth of the left column.", {.unit = "mm", .min = 1, .max = 65535})
-      .param("far", 2000, "Depth of the right column.", {.unit = "mm", .min = 1, .max = 65535})
+  facet::StageSpec spec("template.counter",
+                        "Emits `frames` synthetic depth images, then ends the stream.\n"
+                        "Depth ramps from `near` at the left column to `far` at the right.");
+  return spec
+      .declare(kDepth, kFrames, kWidth, kHeight, kNearMm, kFarMm)
       // A source keeps a position in its stream: frames must be produced one after another.
       .concurrency(facet::Concurrency::serial);
 }
 
-// Parameters arrive validated (type, range), so the constructor only converts them.
+// Parameters arrive validated (type, range), so the constructor only reads them.
 CounterSource::CounterSource(const facet::Params& params)
-    : frames_(params.get_int("frames")),
-      width_(static_cast<int>(params.get_int("width"))),
-      height_(static_cast<int>(params.get_int("height"))),
-      near_mm_(params.get_double("near")),
-      far_mm_(params.get_double("far")) {}
+    : frames_(kFrames(params)),
+      width_(kWidth(params)),
+      height_(kHeight(params)),
+      near_mm_(kNearMm(params)),
+      far_mm_(kFarMm(params)) {}
 
 void CounterSource::process(facet::ProcessContext& ctx) {
   if (emitted_ == frames_) {
@@ -48,7 +61,7 @@ void CounterSource::process(facet::ProcessContext& ctx) {
                   .cy = 0.5 * height_,
                   .width = width_,
                   .height = height_};
-  ctx.output("depth", std::move(image));
+  kDepth(ctx, std::move(image));
   ++emitted_;
 }
 

@@ -1,27 +1,36 @@
 #include "depth_threshold.hpp"
 
+#include <facet/contract.hpp>
 #include <facet/types/images.hpp>
 #include <opencv2/core.hpp>
 
 namespace facet_template {
+namespace {
+
+// Each port and parameter is declared once: the descriptor puts it in the spec and reads it back,
+// so a name or type is never written twice (facet/contract.hpp).
+const facet::In<facet::DepthImage> kDepth{"depth", "CV_16UC1 depth in millimetres."};
+const facet::Out<facet::DepthImage> kKept{"depth", "The input with far pixels set to 0."};
+const facet::Param<int> kMaxMm{
+    "max_mm", 1250, "Farthest depth kept.", {.unit = "mm", .min = 0, .max = 65535}};
+
+}  // namespace
 
 facet::StageSpec DepthThreshold::spec() {
-  return facet::StageSpec("template.threshold",
-                          "Sets depth beyond `max_mm` to 0 (no measurement).\n"
-                          "Reports `kept_ratio`: the share of measured pixels that were kept.")
-      .input<facet::DepthImage>("depth", "CV_16UC1 depth in millimetres.")
-      .output<facet::DepthImage>("depth", "The input with far pixels set to 0.")
-      .param("max_mm", 1250, "Farthest depth kept.", {.unit = "mm", .min = 0, .max = 65535})
+  facet::StageSpec spec("template.threshold",
+                        "Sets depth beyond `max_mm` to 0 (no measurement).\n"
+                        "Reports `kept_ratio`: the share of measured pixels that were kept.");
+  return spec
+      .declare(kDepth, kKept, kMaxMm)
       // No state between frames and process() only reads members: several frames may run
       // through one instance at once.
       .concurrency(facet::Concurrency::reentrant);
 }
 
-DepthThreshold::DepthThreshold(const facet::Params& params)
-    : max_mm_(params.get_double("max_mm")) {}
+DepthThreshold::DepthThreshold(const facet::Params& params) : max_mm_(kMaxMm(params)) {}
 
 void DepthThreshold::process(facet::ProcessContext& ctx) {
-  const auto& input = ctx.input<facet::DepthImage>("depth");
+  const facet::DepthImage& input = kDepth(ctx);
   if (!input.in_millimetres()) {
     // StageError is for problems the user can fix; the executor adds node, stage and frame.
     throw facet::StageError("expects CV_16UC1 depth in millimetres");
@@ -35,7 +44,7 @@ void DepthThreshold::process(facet::ProcessContext& ctx) {
   if (measured > 0) {
     ctx.metric("kept_ratio", static_cast<double>(cv::countNonZero(output.depth)) / measured);
   }
-  ctx.output("depth", std::move(output));
+  kKept(ctx, std::move(output));
 }
 
 }  // namespace facet_template

@@ -14,7 +14,7 @@ class DepthThreshold final : public facet::Stage {
   void process(facet::ProcessContext& ctx) override;
 
  private:
-  double max_mm_;
+  int max_mm_;
 };
 
 }  // namespace facet_template
