@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <exception>
 
-#include "facet/types/images.hpp"
-
 namespace facet::detail {
 
 std::string describe(const ValidatedNode& node) {
@@ -92,9 +90,9 @@ void account_call(NodeStats& stats, const ProcessContext& ctx, double call_ms,
   }
 }
 
-const FrameInfo* depth_frame_of(std::span<const Packet> outputs) {
+const FrameInfo* frame_of(std::span<const Packet> outputs) {
   for (const Packet& out : outputs) {
-    if (const auto* header = out.get_if<DepthImage>()) return &header->frame;
+    if (const FrameHeader* header = out.header()) return &header->frame;
   }
   return nullptr;
 }

@@ -73,7 +73,8 @@ void call_stage(Stage& stage, ProcessContext& ctx, const ValidatedNode& node,
 void account_call(NodeStats& stats, const ProcessContext& ctx, double call_ms,
                   const RunOptions& options);
 
-// The frame of a source's depth output (its stem and how long the stream is), or nothing.
-const FrameInfo* depth_frame_of(std::span<const Packet> outputs);
+// The frame of a source's first output that carries one (its stem and how long the stream is),
+// or nothing.
+const FrameInfo* frame_of(std::span<const Packet> outputs);
 
 }  // namespace facet::detail

@@ -247,7 +247,7 @@ void PipelinedExecutor::Impl::refill() {
 const FrameInfo* PipelinedExecutor::Impl::frame_of(const Slot& slot) const {
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     if (!nodes_[n].source || slot.state[n] != State::done) continue;
-    const FrameInfo* info = detail::depth_frame_of(slot.contexts[n].outputs());
+    const FrameInfo* info = detail::frame_of(slot.contexts[n].outputs());
     if (info != nullptr && !info->stem.empty()) return info;
   }
   return nullptr;

@@ -84,7 +84,7 @@ RunStats SequentialExecutor::run(const RunOptions& options) {
           stream_ended = true;
           break;
         }
-        const FrameInfo* info = stem.empty() ? detail::depth_frame_of(ctx.outputs()) : nullptr;
+        const FrameInfo* info = stem.empty() ? detail::frame_of(ctx.outputs()) : nullptr;
         if (info != nullptr) {
           stem = info->stem;
           stream_frames = info->stream_frames;

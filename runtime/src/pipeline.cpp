@@ -146,7 +146,7 @@ class Pipeline::Impl {
           result.end_of_stream = true;
           return result;
         }
-        const FrameInfo* info = stem.empty() ? detail::depth_frame_of(ctx.outputs()) : nullptr;
+        const FrameInfo* info = stem.empty() ? detail::frame_of(ctx.outputs()) : nullptr;
         if (info != nullptr) stem = info->stem;
       }
     }

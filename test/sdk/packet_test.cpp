@@ -49,3 +49,24 @@ TEST(Packet, KeysAreComparedByContentNotAddress) {
 }
 
 }  // namespace
+
+namespace {
+
+// Any payload derived from FrameHeader shows its frame through the packet, whatever its type, so
+// the executor needs no image type to name a frame's files.
+TEST(Packet, ShowsTheFrameOfAPayloadThatCarriesOne) {
+  facet::LabelImage labels;
+  labels.frame.index = 7;
+  labels.frame.stem = "learn7";
+  const auto packet = facet::Packet::make(labels);
+  ASSERT_NE(packet.header(), nullptr);
+  EXPECT_EQ(packet.header()->frame.stem, "learn7");
+  EXPECT_EQ(packet.header()->frame.index, 7);
+  // The header is the payload's own, not a copy.
+  EXPECT_EQ(static_cast<const void*>(packet.header()),
+            static_cast<const void*>(packet.get_if<facet::LabelImage>()));
+  EXPECT_EQ(facet::Packet::make(Unrelated{}).header(), nullptr);
+  EXPECT_EQ(facet::Packet().header(), nullptr);
+}
+
+}  // namespace

@@ -5,11 +5,14 @@
 // the same type can differ between shared libraries, and a key survives renames of the C++ type.
 // Packets share their payload, so fanning one output out to N consumers copies no image.
 
+#include <concepts>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
+
+#include "facet/types/frame.hpp"
 
 namespace facet {
 
@@ -34,12 +37,14 @@ class Packet {
 
   template <class T>
   static Packet make(T value) {
-    return Packet(std::make_shared<const T>(std::move(value)), facet::type_key<T>());
+    return share<T>(std::make_shared<const T>(std::move(value)));
   }
 
   template <class T>
   static Packet share(std::shared_ptr<const T> value) {
-    return Packet(std::move(value), facet::type_key<T>());
+    const FrameHeader* header = nullptr;
+    if constexpr (std::derived_from<T, FrameHeader>) header = value.get();
+    return Packet(std::move(value), facet::type_key<T>(), header);
   }
 
   bool empty() const noexcept { return data_ == nullptr; }
@@ -62,13 +67,19 @@ class Packet {
   // Identity of the payload: two packets with the same address share one value.
   const void* address() const noexcept { return data_.get(); }
 
+  // The frame and camera of a payload that carries them (a type derived from FrameHeader: every
+  // image, the planes, the objects), whatever its type; null for other payloads. This is how the
+  // executor names a frame's files without knowing any image type.
+  const FrameHeader* header() const noexcept { return header_; }
+
  private:
-  Packet(std::shared_ptr<const void> data, std::string_view key)
-      : data_(std::move(data)), key_(key) {}
+  Packet(std::shared_ptr<const void> data, std::string_view key, const FrameHeader* header)
+      : data_(std::move(data)), key_(key), header_(header) {}
 
   std::shared_ptr<const void> data_;
   // Points at a string literal with static storage (see FACET_TYPE_KEY); compared by content.
   std::string_view key_;
+  const FrameHeader* header_ = nullptr;  // into *data_, which it shares the lifetime of
 };
 
 }  // namespace facet
