@@ -8,6 +8,7 @@
 #include <fstream>
 #include <opencv2/core.hpp>
 
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 #include "io/label_palette.hpp"
@@ -20,6 +21,21 @@ namespace {
 // viewer backgrounds; the palette has no greys.
 constexpr Rgb kUnlabelled{170, 170, 170};
 constexpr std::size_t kBinaryVertexBytes = 3 * 4 + 3 + 4;  // float x, y, z; uchar r, g, b; uint
+
+const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid."};
+const OptionalIn<LabelImage> kLabels{"labels",
+                                     "Segment ids of the same size, CV_32SC1 (CV_16UC1 and CV_8UC1 "
+                                     "accepted), >= 0; unconnected or empty: every label is 0."};
+const Param<std::string> kDir{
+    "dir", "out/cloud", "Output folder, created if missing.", {.required = true}};
+const EnumParam<PlyFormat> kFormat{
+    "format",
+    PlyFormat::binary_little_endian,
+    {{PlyFormat::binary_little_endian, "binary"}, {PlyFormat::ascii, "ascii"}},
+    "PLY encoding: binary (little-endian) or ascii (text).",
+    {.origin = "binary: less than half the size of ascii, about 30 times faster to format"}};
+const Param<bool> kLabelledOnly{"labelled_only", false,
+                                "Write only points with a label other than 0."};
 
 bool finite(const cv::Vec3f& p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -134,33 +150,21 @@ PlyCloud make_ply(const cv::Mat& points, const cv::Mat& labels, PlyFormat format
 }
 
 StageSpec CloudSink::spec() {
-  return StageSpec("io.cloud",
-                   "Writes each frame's valid 3D points as <dir>/<stem>.ply with a segment id "
-                   "and colour per point.\n"
-                   "One vertex per finite point (NaN points are skipped), in row-major pixel "
-                   "order: float x, y, z in metres in the camera frame (x right, y down, z along "
-                   "the optical axis), uchar red, green, blue (the segment's colour, the same as "
-                   "io.overlay's; light grey 170 for label 0) and uint label. Binary little-"
-                   "endian by default, ascii on request. Opens in MeshLab, CloudCompare and "
-                   "Open3D; format: docs/data-formats.md. About 19 bytes per point in binary.")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid.")
-      .optional_input<LabelImage>("labels",
-                                  "Segment ids of the same size, CV_32SC1 (CV_16UC1 and CV_8UC1 "
-                                  "accepted), >= 0; unconnected or empty: every label is 0.")
-      .param("dir", "out/cloud", "Output folder, created if missing.", {.required = true})
-      .param(
-          "format", "binary", "PLY encoding: binary (little-endian) or ascii (text).",
-          {.choices = {std::string("binary"), std::string("ascii")},
-           .origin = "binary: less than half the size of ascii, about 30 times faster to format"})
-      .param("labelled_only", false, "Write only points with a label other than 0.")
+  StageSpec spec("io.cloud",
+                 "Writes each frame's valid 3D points as <dir>/<stem>.ply with a segment id "
+                 "and colour per point.\n"
+                 "One vertex per finite point (NaN points are skipped), in row-major pixel "
+                 "order: float x, y, z in metres in the camera frame (x right, y down, z along "
+                 "the optical axis), uchar red, green, blue (the segment's colour, the same as "
+                 "io.overlay's; light grey 170 for label 0) and uint label. Binary little-"
+                 "endian by default, ascii on request. Opens in MeshLab, CloudCompare and "
+                 "Open3D; format: docs/data-formats.md. About 19 bytes per point in binary.");
+  return spec.declare(kPoints, kLabels, kDir, kFormat, kLabelledOnly)
       .concurrency(Concurrency::serial);
 }
 
 CloudSink::CloudSink(const Params& params)
-    : dir_(params.get_string("dir")),
-      format_(params.get_string("format") == "ascii" ? PlyFormat::ascii
-                                                     : PlyFormat::binary_little_endian),
-      labelled_only_(params.get_bool("labelled_only")) {}
+    : dir_(kDir(params)), format_(kFormat(params)), labelled_only_(kLabelledOnly(params)) {}
 
 void CloudSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
@@ -169,15 +173,16 @@ void CloudSink::open(const OpenContext& /*ctx*/) {
 
 void CloudSink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
-  const auto& points = ctx.input<PointImage>("points");
+  const PointImage& points = kPoints(ctx);
   const std::filesystem::path file =
       std::filesystem::path(frame_file(dir_, points.frame)).replace_extension(".ply");
   if (points.points.type() != CV_32FC3) {
     throw StageError("cannot write '" + file.string() + "': points must be CV_32FC3 (metres)");
   }
   cv::Mat ids;
-  if (ctx.has_input("labels") && !ctx.input<LabelImage>("labels").labels.empty()) {
-    const cv::Mat& labels = ctx.input<LabelImage>("labels").labels;
+  const LabelImage* input_labels = kLabels(ctx);
+  if (input_labels != nullptr && !input_labels->labels.empty()) {
+    const cv::Mat& labels = input_labels->labels;
     if (labels.channels() != 1 ||
         (labels.depth() != CV_32S && labels.depth() != CV_16U && labels.depth() != CV_8U)) {
       throw StageError("cannot write '" + file.string() +

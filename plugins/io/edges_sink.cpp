@@ -2,28 +2,36 @@
 
 #include <opencv2/core.hpp>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "io/output_folder.hpp"
 #include "io/png_files.hpp"
 
 namespace facet::io {
+namespace {
+
+const In<EdgeImage> kEdges{"edges", "Edge score (CV_32FC1) and mask (CV_8UC1, 255 = edge)."};
+const Param<std::string> kDir{
+    "dir", "out/edges", "Output folder, created if missing.", {.required = true}};
+const EnumParam<EdgeOutput> kWhat{"what",
+                                  EdgeOutput::mask,
+                                  {{EdgeOutput::mask, "mask"}, {EdgeOutput::score, "score"}},
+                                  "Which image to write.",
+                                  {.origin = "mask: the binary decision later stages use"}};
+
+}  // namespace
 
 StageSpec EdgesSink::spec() {
-  return StageSpec("io.edges",
-                   "Writes edge images as <dir>/<stem>.png, 8-bit.\n"
-                   "With what = mask: 255 = edge, 0 = surface. With what = score: the edge score "
-                   "clamped to [0, 1] and scaled to 0..255, so smooth surfaces are bright and "
-                   "creases dark.")
-      .input<EdgeImage>("edges", "Edge score (CV_32FC1) and mask (CV_8UC1, 255 = edge).")
-      .param("dir", "out/edges", "Output folder, created if missing.", {.required = true})
-      .param("what", "mask", "Which image to write.",
-             {.choices = {std::string("mask"), std::string("score")},
-              .origin = "mask: the binary decision later stages use"})
-      .concurrency(Concurrency::serial);
+  StageSpec spec("io.edges",
+                 "Writes edge images as <dir>/<stem>.png, 8-bit.\n"
+                 "With what = mask: 255 = edge, 0 = surface. With what = score: the edge score "
+                 "clamped to [0, 1] and scaled to 0..255, so smooth surfaces are bright and "
+                 "creases dark.");
+  return spec.declare(kEdges, kDir, kWhat).concurrency(Concurrency::serial);
 }
 
 EdgesSink::EdgesSink(const Params& params)
-    : dir_(params.get_string("dir")), write_score_(params.get_string("what") == "score") {}
+    : dir_(kDir(params)), write_score_(kWhat(params) == EdgeOutput::score) {}
 
 void EdgesSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
@@ -32,7 +40,7 @@ void EdgesSink::open(const OpenContext& /*ctx*/) {
 
 void EdgesSink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
-  const auto& edges = ctx.input<EdgeImage>("edges");
+  const EdgeImage& edges = kEdges(ctx);
   const std::filesystem::path file = frame_file(dir_, edges.frame);
   const cv::Mat& source = write_score_ ? edges.score : edges.mask;
   if (source.empty()) {

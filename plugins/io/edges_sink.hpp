@@ -9,6 +9,9 @@
 
 namespace facet::io {
 
+// Which of the edge images io.edges writes.
+enum class EdgeOutput { mask, score };
+
 class EdgesSink final : public Stage {
  public:
   static StageSpec spec();

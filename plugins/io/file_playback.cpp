@@ -2,34 +2,37 @@
 
 namespace facet::io {
 
-void FilePlayback::declare_params(StageSpec& spec, const PlaybackWording& wording) {
-  const std::string& item = wording.item;
-  spec.param("on_error", "fail",
-             "What to do with an unusable " + item + " (" + wording.unusable +
-                 "): fail stops the run with an error naming the file; skip warns and goes on.",
-             {.choices = {std::string("fail"), std::string("skip")},
-              .origin = "fail: a damaged recording should not pass unnoticed"})
-      .param("start", 0, "Index of the first " + item + ", in natural order.",
-             {.unit = "frames", .min = 0.0})
-      .param("stride", 1, "Read every stride-th " + item + " from start on.",
-             {.unit = "frames", .min = 1.0})
-      .param("loop", false,
-             "Start again from 'start' after the last " + item + " instead of ending.")
-      .param(
-          "fps", 30.0,
+FilePlaybackParams::FilePlaybackParams(const PlaybackWording& wording)
+    : on_error{"on_error",
+               OnError::fail,
+               {{OnError::fail, "fail"}, {OnError::skip, "skip"}},
+               "What to do with an unusable " + wording.item + " (" + wording.unusable +
+                   "): fail stops the run with an error naming the file; skip warns and goes on.",
+               {.origin = "fail: a damaged recording should not pass unnoticed"}},
+      start{"start",
+            0,
+            "Index of the first " + wording.item + ", in natural order.",
+            {.unit = "frames", .min = 0.0}},
+      stride{"stride",
+             1,
+             "Read every stride-th " + wording.item + " from start on.",
+             {.unit = "frames", .min = 1.0}},
+      loop{"loop", false,
+           "Start again from 'start' after the last " + wording.item + " instead of ending."},
+      fps{"fps",
+          30.0,
           "Nominal frame rate; timestamps are frame index / fps (" + wording.timestamp_note + ").",
           {.unit = "Hz",
            .min = 0.001,
            .max = 10000.0,
-           .origin = "the 30 Hz of Kinect-type and Xtion depth cameras"});
-}
+           .origin = "the 30 Hz of Kinect-type and Xtion depth cameras"}} {}
 
-FilePlayback::FilePlayback(const Params& params)
-    : skip_unusable_(params.get_string("on_error") == "skip"),
-      start_(params.get_int("start")),
-      stride_(params.get_int("stride")),
-      loop_(params.get_bool("loop")),
-      fps_hz_(params.get_double("fps")) {}
+FilePlayback::FilePlayback(const PlaybackOptions& options)
+    : skip_unusable_(options.on_error == OnError::skip),
+      start_(options.start),
+      stride_(options.stride),
+      loop_(options.loop),
+      fps_hz_(options.fps_hz) {}
 
 void FilePlayback::schedule(std::size_t count, const std::string& path, const std::string& items) {
   if (start_ >= static_cast<std::int64_t>(count)) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "facet/context.hpp"
+#include "facet/contract.hpp"
 #include "facet/error.hpp"
 #include "facet/param.hpp"
 #include "facet/stage_spec.hpp"
@@ -23,12 +24,39 @@ struct PlaybackWording {
   std::string timestamp_note;  // after "timestamps are frame index / fps", e.g. "TUM: ..."
 };
 
+// What an unusable item does: fail stops the run, skip warns and goes on.
+enum class OnError { fail, skip };
+
+// What the playback parameters below say, as FilePlayback takes it.
+struct PlaybackOptions {
+  OnError on_error = OnError::fail;
+  std::int64_t start = 0;
+  std::int64_t stride = 1;
+  bool loop = false;
+  double fps_hz = 30.0;
+};
+
+// The on_error, start, stride, loop and fps parameters every file source shares, their docs
+// worded for the source (each source defines its own kPlayback from its PlaybackWording):
+// `spec.declare(kPlayback)` declares them, `kPlayback(params)` reads them.
+struct FilePlaybackParams {
+  explicit FilePlaybackParams(const PlaybackWording& wording);
+
+  EnumParam<OnError> on_error;
+  Param<std::int64_t> start;
+  Param<std::int64_t> stride;
+  Param<bool> loop;
+  Param<double> fps;
+
+  void declare_in(StageSpec& spec) const { spec.declare(on_error, start, stride, loop, fps); }
+  PlaybackOptions operator()(const Params& params) const {
+    return {on_error(params), start(params), stride(params), loop(params), fps(params)};
+  }
+};
+
 class FilePlayback {
  public:
-  // Declares on_error, start, stride, loop and fps on `spec`.
-  static void declare_params(StageSpec& spec, const PlaybackWording& wording);
-
-  explicit FilePlayback(const Params& params);
+  explicit FilePlayback(const PlaybackOptions& options);
 
   // Schedules items start, start + stride, ... of `count` and rewinds. Throws StageError naming
   // `path` when start is beyond the last item.

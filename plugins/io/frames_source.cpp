@@ -2,6 +2,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "facet/contract.hpp"
 #include "io/frame_listing.hpp"
 #include "io/intrinsics_file.hpp"
 #include "io/png_files.hpp"
@@ -9,6 +10,44 @@
 namespace fs = std::filesystem;
 
 namespace facet::io {
+namespace {
+
+const Out<DepthImage> kDepth{"depth",
+                             "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
+                             "file stem, timestamp and camera intrinsics."};
+const Out<LabelImage> kLabels{"labels",
+                              "Ground-truth segment ids, CV_32SC1 (0 = background); an "
+                              "empty packet for frames without a label file."};
+const Param<std::string> kPath{
+    "path",
+    "data/mosd",
+    "Dataset folder (depth/*.png, flat *-depth.png, or TUM associations.txt / "
+    "depth.txt), a TUM list file, or a glob of depth PNGs (wildcards * and ? in the "
+    "file name).",
+    {.required = true}};
+const Param<std::string> kIntrinsics{
+    "intrinsics",
+    "",
+    "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = "
+    "<dataset folder>/intrinsics.yaml.",
+    {.origin = "dataset format, see docs/data-formats.md"}};
+const Param<std::string> kLabelsDir{
+    "labels_dir",
+    "label",
+    "Folder of ground-truth label PNGs, relative to the dataset folder (or absolute); "
+    "e.g. label_parts for part-level labels. A missing folder means no ground truth.",
+    {.origin = "dataset format, see docs/data-formats.md"}};
+const Param<double> kDepthScale{
+    "depth_scale",
+    0.0,
+    "Depth PNG units per metre, converted to mm on reading (e.g. 10000 for "
+    "YCB-Video's 0.1 mm); 0 = the layout's convention: 1000 (mm), TUM 5000.",
+    {.unit = "1/m", .min = 0.0, .origin = "dataset format, see docs/data-formats.md"}};
+const FilePlaybackParams kPlayback{{.item = "frame",
+                                    .unusable = "unreadable, not 16-bit, wrong size",
+                                    .timestamp_note = "TUM: from the list"}};
+
+}  // namespace
 
 StageSpec FramesSource::spec() {
   StageSpec spec("io.frames",
@@ -25,42 +64,16 @@ StageSpec FramesSource::spec() {
                  "see 'depth_scale'). Ends the stream after the last frame "
                  "unless 'loop' is set. Reports the metric valid_ratio (valid pixels / all) and "
                  "warns about a frame without any valid pixel.");
-  spec.output<DepthImage>("depth",
-                          "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
-                          "file stem, timestamp and camera intrinsics.")
-      .output<LabelImage>("labels",
-                          "Ground-truth segment ids, CV_32SC1 (0 = background); an "
-                          "empty packet for frames without a label file.")
-      .param("path", "data/mosd",
-             "Dataset folder (depth/*.png, flat *-depth.png, or TUM associations.txt / "
-             "depth.txt), a TUM list file, or a glob of depth PNGs (wildcards * and ? in the "
-             "file name).",
-             {.required = true})
-      .param("intrinsics", "",
-             "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = "
-             "<dataset folder>/intrinsics.yaml.",
-             {.origin = "dataset format, see docs/data-formats.md"})
-      .param("labels_dir", "label",
-             "Folder of ground-truth label PNGs, relative to the dataset folder (or absolute); "
-             "e.g. label_parts for part-level labels. A missing folder means no ground truth.",
-             {.origin = "dataset format, see docs/data-formats.md"})
-      .param("depth_scale", 0.0,
-             "Depth PNG units per metre, converted to mm on reading (e.g. 10000 for "
-             "YCB-Video's 0.1 mm); 0 = the layout's convention: 1000 (mm), TUM 5000.",
-             {.unit = "1/m", .min = 0.0, .origin = "dataset format, see docs/data-formats.md"})
+  return spec.declare(kDepth, kLabels, kPath, kIntrinsics, kLabelsDir, kDepthScale, kPlayback)
       .concurrency(Concurrency::serial);
-  FilePlayback::declare_params(spec, {.item = "frame",
-                                      .unusable = "unreadable, not 16-bit, wrong size",
-                                      .timestamp_note = "TUM: from the list"});
-  return spec;
 }
 
 FramesSource::FramesSource(const Params& params)
-    : path_(params.get_string("path")),
-      intrinsics_param_(params.get_string("intrinsics")),
-      labels_dir_param_(params.get_string("labels_dir")),
-      depth_scale_(params.get_double("depth_scale")),
-      playback_(params) {}
+    : path_(kPath(params)),
+      intrinsics_param_(kIntrinsics(params)),
+      labels_dir_param_(kLabelsDir(params)),
+      depth_scale_(kDepthScale(params)),
+      playback_(kPlayback(params)) {}
 
 void FramesSource::open(const OpenContext& /*ctx*/) {
   listing_ = list_frames(path_);
@@ -135,8 +148,8 @@ void FramesSource::process(ProcessContext& ctx) {
       ctx.warn("no valid depth in '" + depth_file.filename().string() + "': every pixel is 0");
     }
     ctx.metric("valid_ratio", static_cast<double>(valid_px) / pixels);
-    ctx.output("depth", std::move(depth));
-    if (!labels.labels.empty()) ctx.output("labels", std::move(labels));
+    kDepth(ctx, std::move(depth));
+    if (!labels.labels.empty()) kLabels(ctx, std::move(labels));
     playback_.emitted();
     return;
   }

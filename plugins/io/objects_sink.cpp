@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "facet/contract.hpp"
 #include "io/output_folder.hpp"
 
 namespace facet::io {
@@ -104,6 +105,11 @@ class JsonText {
   bool first_ = true;
 };
 
+const In<ObjectList> kObjects{"objects",
+                              "Per-object shape models (shape.superquadric, shape.pca_box)."};
+const Param<std::string> kDir{
+    "dir", "out/objects", "Output folder, created if missing.", {.required = true}};
+
 std::filesystem::path json_file(const std::filesystem::path& dir, const FrameInfo& frame) {
   return std::filesystem::path(frame_file(dir, frame)).replace_extension(".json");
 }
@@ -144,20 +150,18 @@ std::string objects_to_json(const ObjectList& list) {
 }
 
 StageSpec ObjectsSink::spec() {
-  return StageSpec("io.objects",
-                   "Writes each frame's object list as <dir>/<stem>.json.\n"
-                   "One file per frame (frame_<index>.json without a stem): schema version, "
-                   "frame stem, index and timestamp, the camera intrinsics, and per object its "
-                   "id, pixel count, centroid, axis-aligned bounds, oriented box, support plane "
-                   "id and equation, superquadric and grasp prototype, in metres in the camera "
-                   "frame. Schema: docs/objects-json.md. Deterministic "
-                   "formatting, so equal lists give equal files.")
-      .input<ObjectList>("objects", "Per-object shape models (shape.superquadric, shape.pca_box).")
-      .param("dir", "out/objects", "Output folder, created if missing.", {.required = true})
-      .concurrency(Concurrency::serial);
+  StageSpec spec("io.objects",
+                 "Writes each frame's object list as <dir>/<stem>.json.\n"
+                 "One file per frame (frame_<index>.json without a stem): schema version, "
+                 "frame stem, index and timestamp, the camera intrinsics, and per object its "
+                 "id, pixel count, centroid, axis-aligned bounds, oriented box, support plane "
+                 "id and equation, superquadric and grasp prototype, in metres in the camera "
+                 "frame. Schema: docs/objects-json.md. Deterministic "
+                 "formatting, so equal lists give equal files.");
+  return spec.declare(kObjects, kDir).concurrency(Concurrency::serial);
 }
 
-ObjectsSink::ObjectsSink(const Params& params) : dir_(params.get_string("dir")) {}
+ObjectsSink::ObjectsSink(const Params& params) : dir_(kDir(params)) {}
 
 void ObjectsSink::open(const OpenContext& /*ctx*/) {
   ensure_folder(dir_);
@@ -166,8 +170,8 @@ void ObjectsSink::open(const OpenContext& /*ctx*/) {
 
 void ObjectsSink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
-  if (!ctx.has_input("objects")) return;
-  const auto& list = ctx.input<ObjectList>("objects");
+  if (kObjects.packet(ctx).empty()) return;
+  const ObjectList& list = kObjects(ctx);
   const std::filesystem::path file = json_file(dir_, list.frame);
   const std::string text = objects_to_json(list);
   write_file_atomically(file, {text});

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 #include "io/output_folder.hpp"
@@ -10,11 +11,54 @@
 namespace facet::io {
 namespace {
 
-Rgb parse_colour_param(const Params& params, const char* name) {
-  const std::string& text = params.get_string(name);
+const In<DepthImage> kDepth{"depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m; names the file."};
+const In<LabelImage> kLabels{
+    "labels",
+    "Segment ids of the same size, CV_32SC1 (CV_16UC1 and CV_8UC1 accepted), "
+    "0 = not a segment; what io.labels takes."};
+const OptionalIn<EdgeImage> kEdges{
+    "edges",
+    "Normal edges of the same size; the mask (CV_8UC1, 255 = edge) is "
+    "drawn in edge_colour when draw_edges is set."};
+const Param<std::string> kDir{
+    "dir", "out/overlay", "Output folder, created if missing.", {.required = true}};
+const Param<double> kNearM{
+    "near_m",
+    0.0,
+    "Depth drawn brightest with a fixed range (far_m > 0); nearer is as bright.",
+    {.unit = "m", .min = 0.0, .max = 100.0}};
+const Param<double> kFarM{
+    "far_m",
+    0.0,
+    "Depth drawn darkest with a fixed range; farther is as dark. 0 = range of each "
+    "frame: its 1st to 99th percentile of valid depth, so a few stray pixels do not "
+    "wash out the picture.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 100.0,
+     .origin = "auto: works for any scene; fix it to compare frames by brightness"}};
+const Param<double> kAlpha{
+    "alpha",
+    0.5,
+    "Weight of the segment colour over the grey: 0 = grey only, 1 = solid.",
+    {.min = 0.0, .max = 1.0, .origin = "half: colour and the depth's shading both show"}};
+const Param<bool> kDrawBorders{"draw_borders", true,
+                               "Draw the border pixels of every segment in border_colour."};
+const Param<std::string> kBorderColour{"border_colour", "#000000",
+                                       "Colour of segment borders, #rrggbb."};
+const Param<bool> kDrawEdges{"draw_edges", true,
+                             "Draw the edge mask of the 'edges' input (when connected) in "
+                             "edge_colour."};
+const Param<std::string> kEdgeColour{"edge_colour",
+                                     "#ff00ff",
+                                     "Colour of edge pixels, #rrggbb.",
+                                     {.origin = "magenta: rare in the palette's blended colours"}};
+
+Rgb parse_colour_param(const Params& params, const Param<std::string>& param) {
+  const std::string text = param(params);
   const auto colour = parse_hex_colour(text);
   if (!colour) {
-    throw StageError("param '" + std::string(name) + "': '" + text +
+    throw StageError("param '" + param.name() + "': '" + text +
                      "' is not a colour; write it as #rrggbb, e.g. #ff00ff");
   }
   return *colour;
@@ -23,55 +67,30 @@ Rgb parse_colour_param(const Params& params, const char* name) {
 }  // namespace
 
 StageSpec OverlaySink::spec() {
-  return StageSpec(
-             "io.overlay",
-             "Writes a colour picture of each frame as <dir>/<stem>.png (8-bit RGB).\n"
-             "Depth is the grey background: near is bright, far is dark grey (48), no "
-             "measurement is black. Segments (label != 0) are blended over it in a colour "
-             "that depends on the id only, so an object keeps its colour from frame to frame "
-             "and in io.cloud's point clouds; label 0 keeps the grey. Segment borders (pixels "
-             "with a 4-neighbour of another id) and the edge mask of the optional 'edges' "
-             "input (where there is depth) are drawn on top in solid colours. Frames with an "
-             "empty label packet are not written, as with io.labels. Format and palette: "
-             "docs/data-formats.md.")
-      .input<DepthImage>("depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m; names the file.")
-      .input<LabelImage>("labels",
-                         "Segment ids of the same size, CV_32SC1 (CV_16UC1 and CV_8UC1 accepted), "
-                         "0 = not a segment; what io.labels takes.")
-      .optional_input<EdgeImage>("edges",
-                                 "Normal edges of the same size; the mask (CV_8UC1, 255 = edge) is "
-                                 "drawn in edge_colour when draw_edges is set.")
-      .param("dir", "out/overlay", "Output folder, created if missing.", {.required = true})
-      .param("near_m", 0.0,
-             "Depth drawn brightest with a fixed range (far_m > 0); nearer is as bright.",
-             {.unit = "m", .min = 0.0, .max = 100.0})
-      .param("far_m", 0.0,
-             "Depth drawn darkest with a fixed range; farther is as dark. 0 = range of each "
-             "frame: its 1st to 99th percentile of valid depth, so a few stray pixels do not "
-             "wash out the picture.",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 100.0,
-              .origin = "auto: works for any scene; fix it to compare frames by brightness"})
-      .param("alpha", 0.5, "Weight of the segment colour over the grey: 0 = grey only, 1 = solid.",
-             {.min = 0.0, .max = 1.0, .origin = "half: colour and the depth's shading both show"})
-      .param("draw_borders", true, "Draw the border pixels of every segment in border_colour.")
-      .param("border_colour", "#000000", "Colour of segment borders, #rrggbb.")
-      .param("draw_edges", true,
-             "Draw the edge mask of the 'edges' input (when connected) in edge_colour.")
-      .param("edge_colour", "#ff00ff", "Colour of edge pixels, #rrggbb.",
-             {.origin = "magenta: rare in the palette's blended colours"})
+  StageSpec spec("io.overlay",
+                 "Writes a colour picture of each frame as <dir>/<stem>.png (8-bit RGB).\n"
+                 "Depth is the grey background: near is bright, far is dark grey (48), no "
+                 "measurement is black. Segments (label != 0) are blended over it in a colour "
+                 "that depends on the id only, so an object keeps its colour from frame to frame "
+                 "and in io.cloud's point clouds; label 0 keeps the grey. Segment borders (pixels "
+                 "with a 4-neighbour of another id) and the edge mask of the optional 'edges' "
+                 "input (where there is depth) are drawn on top in solid colours. Frames with an "
+                 "empty label packet are not written, as with io.labels. Format and palette: "
+                 "docs/data-formats.md.");
+  return spec
+      .declare(kDepth, kLabels, kEdges, kDir, kNearM, kFarM, kAlpha, kDrawBorders, kBorderColour,
+               kDrawEdges, kEdgeColour)
       .concurrency(Concurrency::serial);
 }
 
-OverlaySink::OverlaySink(const Params& params) : dir_(params.get_string("dir")) {
-  style_.near_m = params.get_double("near_m");
-  style_.far_m = params.get_double("far_m");
-  style_.alpha = params.get_double("alpha");
-  style_.draw_borders = params.get_bool("draw_borders");
-  style_.border_colour = parse_colour_param(params, "border_colour");
-  style_.draw_edges = params.get_bool("draw_edges");
-  style_.edge_colour = parse_colour_param(params, "edge_colour");
+OverlaySink::OverlaySink(const Params& params) : dir_(kDir(params)) {
+  style_.near_m = kNearM(params);
+  style_.far_m = kFarM(params);
+  style_.alpha = kAlpha(params);
+  style_.draw_borders = kDrawBorders(params);
+  style_.border_colour = parse_colour_param(params, kBorderColour);
+  style_.draw_edges = kDrawEdges(params);
+  style_.edge_colour = parse_colour_param(params, kEdgeColour);
   if (style_.far_m > 0.0 && style_.far_m <= style_.near_m) {
     throw StageError("far_m (" + std::to_string(style_.far_m) + ") must be above near_m (" +
                      std::to_string(style_.near_m) + "), or 0 for a range per frame");
@@ -85,14 +104,14 @@ void OverlaySink::open(const OpenContext& /*ctx*/) {
 
 void OverlaySink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
-  const auto& depth = ctx.input<DepthImage>("depth");
+  const DepthImage& depth = kDepth(ctx);
   const std::filesystem::path file = frame_file(dir_, depth.frame);
   if (depth.depth.type() != CV_16UC1 && depth.depth.type() != CV_32FC1) {
     throw StageError("cannot write '" + file.string() +
                      "': depth must be CV_16UC1 (mm) or CV_32FC1 (m)");
   }
-  if (!ctx.has_input("labels")) return;
-  const cv::Mat& labels = ctx.input<LabelImage>("labels").labels;
+  if (kLabels.packet(ctx).empty()) return;
+  const cv::Mat& labels = kLabels(ctx).labels;
   cv::Mat ids;  // empty: no segments
   if (!labels.empty()) {
     if (labels.channels() != 1 ||
@@ -108,8 +127,9 @@ void OverlaySink::process(ProcessContext& ctx) {
     }
   }
   cv::Mat mask;
-  if (style_.draw_edges && ctx.has_input("edges")) {
-    const auto& edges = ctx.input<EdgeImage>("edges");
+  const EdgeImage* edges_input = style_.draw_edges ? kEdges(ctx) : nullptr;
+  if (edges_input != nullptr) {
+    const EdgeImage& edges = *edges_input;
     if (edges.mask.empty()) {
       throw StageError("cannot write '" + file.string() + "': the edge image has no mask");
     }

@@ -6,11 +6,24 @@
 #include <system_error>
 #include <utility>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 
 namespace fs = std::filesystem;
 
 namespace facet::openni2 {
+namespace {
+
+const In<DepthImage> kDepth{"depth", "Depth, CV_16UC1 in mm, at most 1600x1200 pixels."};
+const Param<std::string> kPath{
+    "path", "", "The .oni file to write (its folder is created).", {.required = true}};
+const Param<int> kFps{"fps",
+                      30,
+                      "Frame rate the recording declares; also the period for timestamps "
+                      "that do not grow.",
+                      {.unit = "Hz", .min = 1, .max = 1000}};
+
+}  // namespace
 
 double horizontal_fov_rad(const CameraIntrinsics& camera) {
   return camera.fx > 0.0 ? 2.0 * std::atan(0.5 * camera.width / camera.fx) : 0.0;
@@ -21,32 +34,25 @@ double vertical_fov_rad(const CameraIntrinsics& camera) {
 }
 
 StageSpec OniSink::spec() {
-  return StageSpec("io.oni",
-                   "Writes the depth stream as one .oni recording (see docs/cameras.md).\n"
-                   "OpenNI2's file format with one uncompressed depth stream in 1 mm: io.openni2 "
-                   "(uri: the file) and other programs that use OpenNI2's file driver play it. The "
-                   "first frame "
-                   "fixes the image size and the field of view the file reports (from its "
-                   "intrinsics: 2 atan(width / 2 fx) across); every later frame must have that "
-                   "size. Each frame keeps its own timestamp (microseconds); one that does not "
-                   "grow (a looping source) is replaced by the previous one plus a period of "
-                   "'fps'. The file is complete when the stream ends.")
-      .input<DepthImage>("depth", "Depth, CV_16UC1 in mm, at most 1600x1200 pixels.")
-      .param("path", "", "The .oni file to write (its folder is created).", {.required = true})
-      .param("fps", 30,
-             "Frame rate the recording declares; also the period for timestamps "
-             "that do not grow.",
-             {.unit = "Hz", .min = 1, .max = 1000})
-      .concurrency(Concurrency::serial);
+  StageSpec spec("io.oni",
+                 "Writes the depth stream as one .oni recording (see docs/cameras.md).\n"
+                 "OpenNI2's file format with one uncompressed depth stream in 1 mm: io.openni2 "
+                 "(uri: the file) and other programs that use OpenNI2's file driver play it. The "
+                 "first frame "
+                 "fixes the image size and the field of view the file reports (from its "
+                 "intrinsics: 2 atan(width / 2 fx) across); every later frame must have that "
+                 "size. Each frame keeps its own timestamp (microseconds); one that does not "
+                 "grow (a looping source) is replaced by the previous one plus a period of "
+                 "'fps'. The file is complete when the stream ends.");
+  return spec.declare(kDepth, kPath, kFps).concurrency(Concurrency::serial);
 }
 
-OniSink::OniSink(const Params& params)
-    : file_(params.get_string("path")), fps_(static_cast<int>(params.get_int("fps"))) {}
+OniSink::OniSink(const Params& params) : file_(kPath(params)), fps_(kFps(params)) {}
 
 OniSink::~OniSink() = default;
 
 void OniSink::process(ProcessContext& ctx) {
-  const auto& depth = ctx.input<DepthImage>("depth");
+  const DepthImage& depth = kDepth(ctx);
   if (!depth.in_millimetres()) {
     throw StageError("cannot record '" + file_.string() +
                      "': io.oni writes CV_16UC1 depth in mm (add a conversion before it)");

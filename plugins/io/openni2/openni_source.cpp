@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "openni2/openni_runtime.hpp"
 
@@ -19,6 +20,63 @@ namespace fs = std::filesystem;
 
 namespace facet::openni2 {
 namespace {
+
+const Out<DepthImage> kDepth{"depth",
+                             "Depth, CV_16UC1 in mm (0 = invalid), with frame index, device "
+                             "timestamp, stem and camera intrinsics."};
+const Param<std::string> kUri{
+    "uri",
+    "",
+    "Device URI (as `facet doctor` lists them), path of an .oni recording, or empty "
+    "for the first device found.",
+    {.origin = "empty: the first device"}};
+const Param<int> kWidth{"width",
+                        0,
+                        "Depth image width of the video mode; 0 = the device's default.",
+                        {.unit = "px", .min = 0, .max = 4096}};
+const Param<int> kHeight{"height",
+                         0,
+                         "Depth image height of the video mode; 0 = the device's default.",
+                         {.unit = "px", .min = 0, .max = 4096}};
+const Param<int> kFps{"fps",
+                      0,
+                      "Frame rate of the video mode; 0 = the device's default.",
+                      {.unit = "Hz", .min = 0, .max = 1000}};
+const Param<bool> kRegistration{
+    "registration", false,
+    "Register depth to the colour camera (the device warps depth into the colour "
+    "image; the intrinsics are then the colour camera's). An error when the device "
+    "cannot."};
+const Param<bool> kMirror{"mirror", false,
+                          "Mirror the image left to right (OpenNI2's mirroring; off keeps the "
+                          "camera geometry of the intrinsics)."};
+const EnumParam<FramePolicyParam> kPolicy{
+    "policy",
+    FramePolicyParam::automatic,
+    {{FramePolicyParam::automatic, "auto"},
+     {FramePolicyParam::latest, "latest"},
+     {FramePolicyParam::block, "block"}},
+    "latest: newest frame, stale ones dropped (live use); block: every frame in order; "
+    "auto: latest for devices, block for recordings."};
+const Param<int> kTimeoutMs{
+    "timeout_ms",
+    2000,
+    "How long to wait for a frame before the run stops with an error naming the URI.",
+    {.unit = "ms", .min = 1, .max = 600000}};
+const Param<double> kSpeed{"speed",
+                           -1.0,
+                           "Recordings only: playback speed as a multiple of the recorded rate; "
+                           "-1 = as fast as the graph reads (every frame, no waiting).",
+                           {.min = -1.0, .max = 100.0, .origin = "-1: offline processing"}};
+const Param<bool> kLoop{
+    "loop", false,
+    "Recordings only: start again after the last frame instead of ending the stream."};
+const Param<double> kFx{
+    "fx", 0.0, "Focal length in x; 0 = from the field of view.", {.unit = "px", .min = 0.0}};
+const Param<double> kFy{
+    "fy", 0.0, "Focal length in y; 0 = from the field of view.", {.unit = "px", .min = 0.0}};
+const Param<double> kCx{"cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"}};
+const Param<double> kCy{"cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"}};
 
 std::string pixel_format_name(openni::PixelFormat format) {
   switch (format) {
@@ -67,9 +125,15 @@ constexpr std::chrono::milliseconds kStopGrace{100};
 // How long a recording that is closed unread waits for its player thread's first frame.
 constexpr int kPlayerStartTimeout_ms = 2000;
 
-FramePolicy policy_for(const std::string& param, bool recording) {
-  if (param == "latest") return FramePolicy::latest;
-  if (param == "block") return FramePolicy::block;
+FramePolicy policy_for(FramePolicyParam param, bool recording) {
+  switch (param) {
+    case FramePolicyParam::latest:
+      return FramePolicy::latest;
+    case FramePolicyParam::block:
+      return FramePolicy::block;
+    case FramePolicyParam::automatic:
+      break;
+  }
   return recording ? FramePolicy::block : FramePolicy::latest;
 }
 
@@ -146,64 +210,27 @@ StageSpec OpenNi2Source::spec() {
       "dropped_frames and in a warning at most every 300 frames. A recording ends the "
       "stream after its last frame unless 'loop' is set. Errors name the URI and quote "
       "OpenNI2.");
-  spec.output<DepthImage>("depth",
-                          "Depth, CV_16UC1 in mm (0 = invalid), with frame index, device "
-                          "timestamp, stem and camera intrinsics.")
-      .param("uri", "",
-             "Device URI (as `facet doctor` lists them), path of an .oni recording, or empty "
-             "for the first device found.",
-             {.origin = "empty: the first device"})
-      .param("width", 0, "Depth image width of the video mode; 0 = the device's default.",
-             {.unit = "px", .min = 0, .max = 4096})
-      .param("height", 0, "Depth image height of the video mode; 0 = the device's default.",
-             {.unit = "px", .min = 0, .max = 4096})
-      .param("fps", 0, "Frame rate of the video mode; 0 = the device's default.",
-             {.unit = "Hz", .min = 0, .max = 1000})
-      .param("registration", false,
-             "Register depth to the colour camera (the device warps depth into the colour "
-             "image; the intrinsics are then the colour camera's). An error when the device "
-             "cannot.")
-      .param("mirror", false,
-             "Mirror the image left to right (OpenNI2's mirroring; off keeps the camera "
-             "geometry of the intrinsics).")
-      .param("policy", "auto",
-             "latest: newest frame, stale ones dropped (live use); block: every frame in order; "
-             "auto: latest for devices, block for recordings.",
-             {.choices = {std::string("auto"), std::string("latest"), std::string("block")}})
-      .param("timeout_ms", 2000,
-             "How long to wait for a frame before the run stops with an error naming the URI.",
-             {.unit = "ms", .min = 1, .max = 600000})
-      .param("speed", -1.0,
-             "Recordings only: playback speed as a multiple of the recorded rate; -1 = as fast "
-             "as the graph reads (every frame, no waiting).",
-             {.min = -1.0, .max = 100.0, .origin = "-1: offline processing"})
-      .param("loop", false,
-             "Recordings only: start again after the last frame instead of ending the stream.")
-      .param("fx", 0.0, "Focal length in x; 0 = from the field of view.",
-             {.unit = "px", .min = 0.0})
-      .param("fy", 0.0, "Focal length in y; 0 = from the field of view.",
-             {.unit = "px", .min = 0.0})
-      .param("cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"})
-      .param("cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"})
+  return spec
+      .declare(kDepth, kUri, kWidth, kHeight, kFps, kRegistration, kMirror, kPolicy, kTimeoutMs,
+               kSpeed, kLoop, kFx, kFy, kCx, kCy)
       .concurrency(Concurrency::serial);
-  return spec;
 }
 
 OpenNi2Source::OpenNi2Source(const Params& params)
-    : uri_(params.get_string("uri")),
-      registration_(params.get_bool("registration")),
-      mirror_(params.get_bool("mirror")),
-      policy_param_(params.get_string("policy")),
-      timeout_ms_(static_cast<int>(params.get_int("timeout_ms"))),
-      speed_(params.get_double("speed")),
-      loop_(params.get_bool("loop")) {
-  request_.width_px = static_cast<int>(params.get_int("width"));
-  request_.height_px = static_cast<int>(params.get_int("height"));
-  request_.fps = static_cast<int>(params.get_int("fps"));
-  given_.fx = params.get_double("fx");
-  given_.fy = params.get_double("fy");
-  given_.cx = params.get_double("cx");
-  given_.cy = params.get_double("cy");
+    : uri_(kUri(params)),
+      registration_(kRegistration(params)),
+      mirror_(kMirror(params)),
+      policy_param_(kPolicy(params)),
+      timeout_ms_(kTimeoutMs(params)),
+      speed_(kSpeed(params)),
+      loop_(kLoop(params)) {
+  request_.width_px = kWidth(params);
+  request_.height_px = kHeight(params);
+  request_.fps = kFps(params);
+  given_.fx = kFx(params);
+  given_.fy = kFy(params);
+  given_.cx = kCx(params);
+  given_.cy = kCy(params);
   if (speed_ != -1.0 && !(speed_ > 0.0)) {
     throw StageError("param 'speed' is " + std::to_string(speed_) +
                      ": give -1 (as fast as possible) or a multiple of the recorded rate > 0");
@@ -412,7 +439,7 @@ void OpenNi2Source::process(ProcessContext& ctx) {
 
   ctx.metric("dropped_frames", static_cast<double>(drops_.passed_on(frame.getFrameIndex())));
   if (auto warning = drops_.warning()) ctx.warn(what() + ": " + *warning);
-  ctx.output("depth", std::move(depth));
+  kDepth(ctx, std::move(depth));
 }
 
 void OpenNi2Source::close() {

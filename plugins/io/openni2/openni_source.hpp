@@ -17,6 +17,9 @@ namespace facet::openni2 {
 // frame and drops the ones that queued up meanwhile (a live camera: the graph sees the present).
 // `block`: every frame in order (a recording: nothing is lost).
 enum class FramePolicy { latest, block };
+// The `policy` parameter: one of the policies, or `automatic` (latest for a device, block for a
+// recording).
+enum class FramePolicyParam { automatic, latest, block };
 
 // Whether `uri` names a recording rather than a device: an existing regular file, or a name
 // ending in ".oni" (any case). OpenNI2 device URIs ("1d27/0601@2/5") are never files.
@@ -44,7 +47,7 @@ class OpenNi2Source final : public Stage {
   ModeRequest request_;
   bool registration_;
   bool mirror_;
-  std::string policy_param_;  // auto, latest, block
+  FramePolicyParam policy_param_;
   int timeout_ms_;
   double speed_;
   bool loop_;

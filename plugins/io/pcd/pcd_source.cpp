@@ -5,6 +5,7 @@
 #include <opencv2/core.hpp>
 #include <system_error>
 
+#include "facet/contract.hpp"
 #include "io/file_playback.hpp"
 #include "io/frame_listing.hpp"
 #include "io/intrinsics_file.hpp"
@@ -15,6 +16,67 @@ namespace fs = std::filesystem;
 
 namespace facet::pcd {
 namespace {
+
+const Out<DepthImage> kDepth{"depth",
+                             "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
+                             "file stem, timestamp and camera intrinsics."};
+const Out<LabelImage> kLabels{
+    "labels",
+    "Ground-truth segment ids from the 'label' field, CV_32SC1 "
+    "(0 = background, and wherever depth is invalid); an empty packet for "
+    "clouds without a label field."};
+const Param<std::string> kPath{
+    "path",
+    "",
+    "Folder of .pcd files, a glob (wildcards * and ? in the file name) or "
+    "one .pcd file.",
+    {.required = true}};
+const Param<std::string> kIntrinsics{
+    "intrinsics",
+    "",
+    "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = use fx, fy, cx, cy, "
+    "or fit the intrinsics from each organized cloud when those are 0.",
+    {.origin = "dataset format, see docs/data-formats.md"}};
+const Param<double> kFx{"fx", 0.0, "Focal length in x; 0 = not given.", {.unit = "px", .min = 0.0}};
+const Param<double> kFy{"fy", 0.0, "Focal length in y; 0 = not given.", {.unit = "px", .min = 0.0}};
+const Param<double> kCx{"cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"}};
+const Param<double> kCy{"cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"}};
+const Param<int> kWidth{
+    "width",
+    0,
+    "Image width for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
+    "organized cloud's width.",
+    {.unit = "px", .min = 0.0}};
+const Param<int> kHeight{
+    "height",
+    0,
+    "Image height for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
+    "organized cloud's height.",
+    {.unit = "px", .min = 0.0}};
+const Param<double> kMaxFitRms{
+    "max_fit_rms_px",
+    1.0,
+    "Largest RMS error of the fitted intrinsics: a cloud whose points do not project "
+    "onto its WIDTH x HEIGHT grid within it (a cloud reshaped, say 320x960 for "
+    "640x480, or not from one pinhole camera) is refused rather than read into a "
+    "scrambled depth image. Only used when the intrinsics are fitted.",
+    {.unit = "px",
+     .min = 0.0,
+     .origin = "clouds written from a depth camera fit to about 0.001 px (float "
+               "rounding); a reshaped mOSD cloud fits to tens of pixels"}};
+const EnumParam<LabelScheme> kLabelScheme{
+    "labels",
+    LabelScheme::raw,
+    {{LabelScheme::raw, "raw"},
+     {LabelScheme::mosd, "mosd"},
+     {LabelScheme::mosd_parts, "mosd_parts"}},
+    "How label values become segment ids: raw keeps them; mosd reads the mOSD scheme "
+    "(0-9 = invalid and table, 10k..10k+9 = parts of object k-1) as one id per object; "
+    "mosd_parts gives every mOSD part (value >= 20) its own id.",
+    {.origin = "raw: the file's own ids"}};
+const io::FilePlaybackParams kPlayback{{.item = "file",
+                                        .unusable = "unreadable, no x/y/z, intrinsics not fittable",
+                                        .timestamp_note = "PCD files carry no time stamp"}};
 
 bool has_pcd_extension(const fs::path& file) {
   std::string ext = file.extension().string();
@@ -35,12 +97,6 @@ std::vector<fs::path> files_in(const fs::path& folder, Keep keep) {
     return io::natural_less(a.filename().string(), b.filename().string());
   });
   return files;
-}
-
-LabelScheme label_scheme(const std::string& name) {
-  if (name == "mosd") return LabelScheme::mosd;
-  if (name == "mosd_parts") return LabelScheme::mosd_parts;
-  return LabelScheme::raw;
 }
 
 }  // namespace
@@ -94,68 +150,24 @@ StageSpec PcdSource::spec() {
       "cloud (height 1) is re-projected with the given intrinsics (the nearest point wins "
       "a pixel) and refused without them. Ends the stream after the last file unless "
       "'loop' is set. Reports the metric valid_ratio (valid pixels / all).");
-  spec.output<DepthImage>("depth",
-                          "Depth, CV_16UC1 in mm (0 = invalid), with the frame index, "
-                          "file stem, timestamp and camera intrinsics.")
-      .output<LabelImage>("labels",
-                          "Ground-truth segment ids from the 'label' field, CV_32SC1 "
-                          "(0 = background, and wherever depth is invalid); an empty packet for "
-                          "clouds without a label field.")
-      .param("path", "",
-             "Folder of .pcd files, a glob (wildcards * and ? in the file name) or "
-             "one .pcd file.",
-             {.required = true})
-      .param("intrinsics", "",
-             "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = use fx, fy, cx, cy, "
-             "or fit the intrinsics from each organized cloud when those are 0.",
-             {.origin = "dataset format, see docs/data-formats.md"})
-      .param("fx", 0.0, "Focal length in x; 0 = not given.", {.unit = "px", .min = 0.0})
-      .param("fy", 0.0, "Focal length in y; 0 = not given.", {.unit = "px", .min = 0.0})
-      .param("cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"})
-      .param("cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"})
-      .param("width", 0,
-             "Image width for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
-             "organized cloud's width.",
-             {.unit = "px", .min = 0.0})
-      .param("height", 0,
-             "Image height for re-projecting unorganized clouds (with fx, fy, cx, cy); 0 = the "
-             "organized cloud's height.",
-             {.unit = "px", .min = 0.0})
-      .param("max_fit_rms_px", 1.0,
-             "Largest RMS error of the fitted intrinsics: a cloud whose points do not project "
-             "onto its WIDTH x HEIGHT grid within it (a cloud reshaped, say 320x960 for "
-             "640x480, or not from one pinhole camera) is refused rather than read into a "
-             "scrambled depth image. Only used when the intrinsics are fitted.",
-             {.unit = "px",
-              .min = 0.0,
-              .origin = "clouds written from a depth camera fit to about 0.001 px (float "
-                        "rounding); a reshaped mOSD cloud fits to tens of pixels"})
-      .param("labels", "raw",
-             "How label values become segment ids: raw keeps them; mosd reads the mOSD scheme "
-             "(0-9 = invalid and table, 10k..10k+9 = parts of object k-1) as one id per object; "
-             "mosd_parts gives every mOSD part (value >= 20) its own id.",
-             {.choices = {std::string("raw"), std::string("mosd"), std::string("mosd_parts")},
-              .origin = "raw: the file's own ids"})
+  return spec
+      .declare(kDepth, kLabels, kPath, kIntrinsics, kFx, kFy, kCx, kCy, kWidth, kHeight, kMaxFitRms,
+               kLabelScheme, kPlayback)
       .concurrency(Concurrency::serial);
-  io::FilePlayback::declare_params(spec,
-                                   {.item = "file",
-                                    .unusable = "unreadable, no x/y/z, intrinsics not fittable",
-                                    .timestamp_note = "PCD files carry no time stamp"});
-  return spec;
 }
 
 PcdSource::PcdSource(const Params& params)
-    : path_(params.get_string("path")),
-      intrinsics_param_(params.get_string("intrinsics")),
-      scheme_(label_scheme(params.get_string("labels"))),
-      max_fit_rms_px_(params.get_double("max_fit_rms_px")),
-      playback_(params) {
-  given_.fx = params.get_double("fx");
-  given_.fy = params.get_double("fy");
-  given_.cx = params.get_double("cx");
-  given_.cy = params.get_double("cy");
-  given_.width = static_cast<int>(params.get_int("width"));
-  given_.height = static_cast<int>(params.get_int("height"));
+    : path_(kPath(params)),
+      intrinsics_param_(kIntrinsics(params)),
+      scheme_(kLabelScheme(params)),
+      max_fit_rms_px_(kMaxFitRms(params)),
+      playback_(kPlayback(params)) {
+  given_.fx = kFx(params);
+  given_.fy = kFy(params);
+  given_.cx = kCx(params);
+  given_.cy = kCy(params);
+  given_.width = kWidth(params);
+  given_.height = kHeight(params);
 }
 
 void PcdSource::open(const OpenContext& /*ctx*/) {
@@ -248,9 +260,9 @@ void PcdSource::process(ProcessContext& ctx) {
     if (!images.labels.empty()) {
       LabelImage labels{header, std::move(images.labels), 0};
       labels.count = apply_label_scheme(labels.labels, scheme_);
-      ctx.output("labels", std::move(labels));
+      kLabels(ctx, std::move(labels));
     }
-    ctx.output("depth", DepthImage{header, std::move(images.depth)});
+    kDepth(ctx, DepthImage{header, std::move(images.depth)});
     playback_.emitted();
     return;
   }

@@ -125,28 +125,35 @@ cv::Mat tile_images(const std::vector<Tile>& tiles) {
   return canvas;
 }
 
-cv::Mat render_view(const ViewInputs& inputs, const std::string& show, double scale) {
+cv::Mat render_view(const ViewInputs& inputs, Show show, double scale) {
   const cv::Mat no_depth;
   const cv::Mat& depth = inputs.depth != nullptr ? inputs.depth->depth : no_depth;
   cv::Mat image;
-  if (show == "depth") {
-    if (inputs.depth != nullptr) image = render_depth(depth);
-  } else if (show == "normals") {
-    if (inputs.normals != nullptr) image = render_normals(inputs.normals->normals);
-  } else if (show == "edges") {
-    if (inputs.edges != nullptr) image = render_edges(inputs.edges->score, inputs.edges->mask);
-  } else if (show == "labels") {
-    if (inputs.labels != nullptr) image = render_labels(inputs.labels->labels, depth);
-  } else if (show == "all") {
-    std::vector<Tile> tiles;
-    if (inputs.depth != nullptr) tiles.push_back({"depth", render_depth(depth)});
-    if (inputs.normals != nullptr)
-      tiles.push_back({"normals", render_normals(inputs.normals->normals)});
-    if (inputs.edges != nullptr)
-      tiles.push_back({"edges", render_edges(inputs.edges->score, inputs.edges->mask)});
-    if (inputs.labels != nullptr)
-      tiles.push_back({"labels", render_labels(inputs.labels->labels, depth)});
-    image = tile_images(tiles);
+  switch (show) {
+    case Show::depth:
+      if (inputs.depth != nullptr) image = render_depth(depth);
+      break;
+    case Show::normals:
+      if (inputs.normals != nullptr) image = render_normals(inputs.normals->normals);
+      break;
+    case Show::edges:
+      if (inputs.edges != nullptr) image = render_edges(inputs.edges->score, inputs.edges->mask);
+      break;
+    case Show::labels:
+      if (inputs.labels != nullptr) image = render_labels(inputs.labels->labels, depth);
+      break;
+    case Show::all: {
+      std::vector<Tile> tiles;
+      if (inputs.depth != nullptr) tiles.push_back({"depth", render_depth(depth)});
+      if (inputs.normals != nullptr)
+        tiles.push_back({"normals", render_normals(inputs.normals->normals)});
+      if (inputs.edges != nullptr)
+        tiles.push_back({"edges", render_edges(inputs.edges->score, inputs.edges->mask)});
+      if (inputs.labels != nullptr)
+        tiles.push_back({"labels", render_labels(inputs.labels->labels, depth)});
+      image = tile_images(tiles);
+      break;
+    }
   }
   if (image.empty() || scale == 1.0) return image;
   cv::Mat scaled;

@@ -46,9 +46,11 @@ struct ViewInputs {
   const LabelImage* labels = nullptr;
 };
 
-// The picture for `show` (depth, normals, edges, labels or all), scaled by `scale`. `labels` is
-// drawn over depth when depth is there; `all` tiles every input present. Empty when the input
-// `show` needs is missing.
-cv::Mat render_view(const ViewInputs& inputs, const std::string& show, double scale);
+// What io.view shows: one of its inputs, or all of them tiled.
+enum class Show { depth, normals, edges, labels, all };
+
+// The picture for `show`, scaled by `scale`. `labels` is drawn over depth when depth is there;
+// `all` tiles every input present. Empty when the input `show` needs is missing.
+cv::Mat render_view(const ViewInputs& inputs, Show show, double scale);
 
 }  // namespace facet::view

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "facet/stage.hpp"
+#include "view/view_render.hpp"
 #include "view/window_thread.hpp"
 
 namespace facet::view {
@@ -22,7 +23,7 @@ class ViewSink final : public Stage {
 
  private:
   // Parameters.
-  std::string show_;
+  Show show_;
   std::string title_;
   double scale_;
   int wait_ms_;

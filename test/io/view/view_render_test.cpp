@@ -104,7 +104,7 @@ TEST(ViewRender, AllTilesTheConnectedInputsTwoPerRow) {
   inputs.depth = &depth;
   inputs.normals = &normals;
   inputs.labels = &labels;
-  const cv::Mat all = render_view(inputs, "all", 1.0);
+  const cv::Mat all = render_view(inputs, Show::all, 1.0);
   EXPECT_EQ(all.size(), cv::Size(160, 120));                   // 3 tiles: 2 columns, 2 rows
   EXPECT_EQ(all.at<cv::Vec3b>(119, 159), cv::Vec3b(0, 0, 0));  // the empty fourth cell
   // Each tile is its picture (away from the caption in its top left corner): depth top left,
@@ -121,10 +121,10 @@ TEST(ViewRender, APictureWhoseInputIsMissingIsEmptyAndScaleZooms) {
   const DepthImage depth = three_depths();
   ViewInputs inputs;
   inputs.depth = &depth;
-  EXPECT_TRUE(render_view(inputs, "labels", 1.0).empty());
-  EXPECT_TRUE(render_view(inputs, "normals", 1.0).empty());
-  EXPECT_EQ(render_view(inputs, "depth", 2.0).size(), cv::Size(8, 6));
-  EXPECT_EQ(render_view(ViewInputs{}, "all", 1.0).empty(), true);
+  EXPECT_TRUE(render_view(inputs, Show::labels, 1.0).empty());
+  EXPECT_TRUE(render_view(inputs, Show::normals, 1.0).empty());
+  EXPECT_EQ(render_view(inputs, Show::depth, 2.0).size(), cv::Size(8, 6));
+  EXPECT_EQ(render_view(ViewInputs{}, Show::all, 1.0).empty(), true);
 }
 
 }  // namespace
