@@ -4,10 +4,40 @@
 #include <stdexcept>
 #include <string>
 
+#include "facet/contract.hpp"
 #include "facet/error.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::eval {
+namespace {
+
+const In<LabelImage> kLabels{"labels", "Predicted segment ids (0 = unlabelled), any integer type."};
+const OptionalIn<LabelImage> kTruth{
+    "truth",
+    "Ground-truth ids of the same size (0 = background), e.g. io.frames' labels; an "
+    "empty packet (no label file for this frame) skips the frame."};
+const Param<std::string> kTruthBackground{
+    "truth_background", "",
+    "Truth ids treated as background besides 0, comma-separated (e.g. \"1\" for a "
+    "table labelled 1); empty = only 0."};
+const Param<std::int64_t> kMinTruthPixels{
+    "min_truth_pixels",
+    0,
+    "Truth objects with fewer pixels are left out, their pixels ignored in both images.",
+    {.unit = "px", .min = 0}};
+const Param<double> kSegmentedF{
+    "segmented_f",
+    0.75,
+    "Pair F-measure from which a matched object counts as segmented (objects_f75).",
+    {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.), OSD"}};
+const Param<double> kCover{
+    "cover",
+    0.2,
+    "Share of an object's pixels a segment must hold to count as covering it "
+    "(over- and under-segmentation).",
+    {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.)"}};
+
+}  // namespace
 
 std::set<std::int32_t> parse_label_list(const std::string& text, const char* param) {
   std::set<std::int32_t> labels;
@@ -54,43 +84,26 @@ StageSpec GroundTruthEval::spec() {
              "a frame without truth, which is skipped, not an error). A frame with truth but no "
              "segment scores P=1, R=0, F=0; segments but no truth object P=0, R=1, F=0; neither "
              "P=R=F=1. See docs/compare.md.")
-      .input<LabelImage>("labels", "Predicted segment ids (0 = unlabelled), any integer type.")
-      .optional_input<LabelImage>(
-          "truth",
-          "Ground-truth ids of the same size (0 = background), e.g. io.frames' labels; an "
-          "empty packet (no label file for this frame) skips the frame.")
-      .param("truth_background", "",
-             "Truth ids treated as background besides 0, comma-separated (e.g. \"1\" for a "
-             "table labelled 1); empty = only 0.")
-      .param("min_truth_pixels", 0,
-             "Truth objects with fewer pixels are left out, their pixels ignored in both images.",
-             {.unit = "px", .min = 0})
-      .param("segmented_f", 0.75,
-             "Pair F-measure from which a matched object counts as segmented (objects_f75).",
-             {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.), OSD"})
-      .param("cover", 0.2,
-             "Share of an object's pixels a segment must hold to count as covering it "
-             "(over- and under-segmentation).",
-             {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.)"})
+      .declare(kLabels, kTruth, kTruthBackground, kMinTruthPixels, kSegmentedF, kCover)
       .concurrency(Concurrency::reentrant);
 }
 
 GroundTruthEval::GroundTruthEval(const Params& params) {
   options_.truth_background =
-      parse_label_list(params.get_string("truth_background"), "truth_background");
-  options_.min_truth_pixels = params.get_int("min_truth_pixels");
-  options_.segmented_f = params.get_double("segmented_f");
-  options_.cover = params.get_double("cover");
+      parse_label_list(kTruthBackground(params), kTruthBackground.name().c_str());
+  options_.min_truth_pixels = kMinTruthPixels(params);
+  options_.segmented_f = kSegmentedF(params);
+  options_.cover = kCover(params);
 }
 
 void GroundTruthEval::process(ProcessContext& ctx) {
-  const bool has_truth = ctx.has_input("truth") && !ctx.input<LabelImage>("truth").labels.empty();
-  if (!has_truth) {
+  const LabelImage* truth_input = kTruth(ctx);
+  if (truth_input == nullptr || truth_input->labels.empty()) {
     ctx.metric("scored", 0.0);
     return;
   }
-  const cv::Mat& truth = ctx.input<LabelImage>("truth").labels;
-  const cv::Mat& predicted = ctx.input<LabelImage>("labels").labels;
+  const cv::Mat& truth = truth_input->labels;
+  const cv::Mat& predicted = kLabels(ctx).labels;
   OverlapScores scores;
   try {
     scores = score_overlap(truth, predicted, options_);

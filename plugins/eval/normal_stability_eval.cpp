@@ -5,11 +5,24 @@
 #include <numeric>
 
 #include "eval/normal_deviation.hpp"
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::eval {
 namespace {
+
+const In<NormalImage> kNormals{"normals", "Unit normals, CV_32FC3 (NaN = none)."};
+const OptionalIn<LabelImage> kPlaneLabels{
+    "plane_labels",
+    "Plane ids (0 = none) of the same size, e.g. planes.support's plane_labels: the "
+    "largest plane becomes the region."};
+const Param<std::string> kRoi{
+    "roi",
+    "",
+    "The region, \"x, y, width, height\" in pixels (cut to the image); empty = the "
+    "whole largest plane (then plane_labels must be connected).",
+    {.unit = "px", .origin = "paper: a 10x10 patch of the table"}};
 
 // The pixels of the plane id that holds the most pixels (the smaller id on a tie); all zero
 // when there is no plane.
@@ -44,25 +57,17 @@ StageSpec NormalStabilityEval::spec() {
              "without a valid point in the region). Sequence figures: average = mean of "
              "deviation_avg_deg (exact when every frame compares the same points), maximum = "
              "max of deviation_max_deg. See docs/evaluation.md.")
-      .input<NormalImage>("normals", "Unit normals, CV_32FC3 (NaN = none).")
-      .optional_input<LabelImage>(
-          "plane_labels",
-          "Plane ids (0 = none) of the same size, e.g. planes.support's plane_labels: the "
-          "largest plane becomes the region.")
-      .param("roi", "",
-             "The region, \"x, y, width, height\" in pixels (cut to the image); empty = the "
-             "whole largest plane (then plane_labels must be connected).",
-             {.unit = "px", .origin = "paper: a 10x10 patch of the table"})
+      .declare(kNormals, kPlaneLabels, kRoi)
       .concurrency(Concurrency::serial);
 }
 
 NormalStabilityEval::NormalStabilityEval(const Params& params)
-    : roi_(parse_roi(params.get_string("roi"), "roi")) {}
+    : roi_(parse_roi(kRoi(params), kRoi.name().c_str())) {}
 
 cv::Mat NormalStabilityEval::region_of(ProcessContext& ctx, const cv::Size& size) const {
   cv::Mat region;
-  if (ctx.has_input("plane_labels")) {
-    const cv::Mat& planes = ctx.input<LabelImage>("plane_labels").labels;
+  if (const LabelImage* plane_labels = kPlaneLabels(ctx)) {
+    const cv::Mat& planes = plane_labels->labels;
     require_type(planes, CV_32SC1, "plane_labels");
     if (planes.size() != size) {
       throw StageError("inputs 'normals' and 'plane_labels' differ in size");
@@ -89,7 +94,7 @@ cv::Mat NormalStabilityEval::region_of(ProcessContext& ctx, const cv::Size& size
 }
 
 void NormalStabilityEval::process(ProcessContext& ctx) {
-  const cv::Mat& normals = ctx.input<NormalImage>("normals").normals;
+  const cv::Mat& normals = kNormals(ctx).normals;
   require_type(normals, CV_32FC3, "normals");
   const cv::Mat region = region_of(ctx, normals.size());
   if (has_previous_ && previous_normals_.size() != normals.size()) {

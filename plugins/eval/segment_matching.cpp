@@ -4,7 +4,6 @@
 #include <map>
 
 #include "eval/assignment.hpp"
-#include "facet/error.hpp"
 
 namespace facet::eval {
 namespace {
@@ -30,13 +29,6 @@ std::size_t index_of(const std::vector<std::int32_t>& ids, std::int32_t id) {
 }
 
 }  // namespace
-
-OverlapMeasure parse_overlap_measure(const std::string& text, const char* param) {
-  if (text == "mean_ratio") return OverlapMeasure::mean_ratio;
-  if (text == "iou") return OverlapMeasure::iou;
-  throw StageError("param '" + std::string(param) + "': '" + text +
-                   "' is no overlap measure (expected mean_ratio or iou)");
-}
 
 double overlap_of(OverlapMeasure measure, std::int64_t both, std::int64_t pixels_a,
                   std::int64_t pixels_b) {

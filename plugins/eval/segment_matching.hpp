@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <opencv2/core.hpp>
-#include <string>
 #include <vector>
 
 namespace facet::eval {
@@ -15,9 +14,6 @@ enum class OverlapMeasure {
   mean_ratio,  // ½ (|i∩j|/|i| + |i∩j|/|j|): the authors' later code; 1 for identical segments
   iou,         // |i∩j| / |i ∪ j|: the external scorer's stability mode
 };
-
-// "mean_ratio" or "iou"; throws StageError naming `param` on anything else.
-OverlapMeasure parse_overlap_measure(const std::string& text, const char* param);
 
 double overlap_of(OverlapMeasure measure, std::int64_t both, std::int64_t pixels_a,
                   std::int64_t pixels_b);

@@ -3,11 +3,29 @@
 #include <algorithm>
 #include <numeric>
 
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::eval {
 namespace {
+
+const In<LabelImage> kLabels{"labels", "Segment ids of the frame (0 = none), CV_32SC1."};
+const OptionalIn<PointImage> kPoints{
+    "points", "Points of the same size, for the centroid distance in mm (NaN = invalid)."};
+const EnumParam<OverlapMeasure> kMeasure{
+    "measure",
+    OverlapMeasure::mean_ratio,
+    {{OverlapMeasure::mean_ratio, "mean_ratio"}, {OverlapMeasure::iou, "iou"}},
+    "Overlap of segments i and j: mean_ratio = (|i&j|/|i| + |i&j|/|j|) / 2, iou = "
+    "|i&j| / |i|j|.",
+    {.origin = "mean_ratio: the authors' later code; iou: the external scorer"}};
+const Param<double> kMinOverlap{
+    "min_overlap",
+    0.0,
+    "Paired segments correspond when their overlap is above this (0: any shared "
+    "pixel).",
+    {.min = 0.0, .max = 1.0}};
 
 double mean_of(const std::vector<double>& values) {
   return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
@@ -33,32 +51,21 @@ StageSpec StabilityEval::spec() {
              "centroid_max_mm, spurious abs = max of spurious_total, rel = mean spurious / mean "
              "segments. With measure iou it computes the external scorer's --stability figures. "
              "Label 0 is no segment. See docs/evaluation.md.")
-      .input<LabelImage>("labels", "Segment ids of the frame (0 = none), CV_32SC1.")
-      .optional_input<PointImage>(
-          "points", "Points of the same size, for the centroid distance in mm (NaN = invalid).")
-      .param("measure", "mean_ratio",
-             "Overlap of segments i and j: mean_ratio = (|i&j|/|i| + |i&j|/|j|) / 2, iou = "
-             "|i&j| / |i|j|.",
-             {.choices = {std::string("mean_ratio"), std::string("iou")},
-              .origin = "mean_ratio: the authors' later code; iou: the external scorer"})
-      .param("min_overlap", 0.0,
-             "Paired segments correspond when their overlap is above this (0: any shared "
-             "pixel).",
-             {.min = 0.0, .max = 1.0})
+      .declare(kLabels, kPoints, kMeasure, kMinOverlap)
       .concurrency(Concurrency::serial);
 }
 
 StabilityEval::StabilityEval(const Params& params) {
-  options_.measure = parse_overlap_measure(params.get_string("measure"), "measure");
-  options_.min_overlap = params.get_double("min_overlap");
+  options_.measure = kMeasure(params);
+  options_.min_overlap = kMinOverlap(params);
 }
 
 void StabilityEval::process(ProcessContext& ctx) {
-  const cv::Mat& labels = ctx.input<LabelImage>("labels").labels;
+  const cv::Mat& labels = kLabels(ctx).labels;
   require_type(labels, CV_32SC1, "labels");
   cv::Mat points;
-  if (ctx.has_input("points")) {
-    points = ctx.input<PointImage>("points").points;
+  if (const PointImage* input = kPoints(ctx)) {
+    points = input->points;
     require_type(points, CV_32FC3, "points");
     require_same_size(labels, "labels", points, "points");
   }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <thread>
 
+#include "facet/contract.hpp"
 #include "facet/error.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
@@ -16,6 +17,58 @@ namespace {
 
 // How often the matched readers are looked at while waiting for them.
 constexpr auto kMatchPoll = std::chrono::milliseconds(10);
+
+// Which time a message's header stamp gives.
+enum class Stamp { frame, now };
+
+const OptionalIn<DepthImage> kDepth{"depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m."};
+const OptionalIn<LabelImage> kLabels{"labels", "Object ids, 0 = background, at most 65535."};
+const OptionalIn<ObjectList> kObjects{"objects", "Object models (shape.superquadric's output)."};
+const OptionalIn<SupportPlanes> kPlanes{"planes",
+                                        "Support planes, for the coefficients of each object's "
+                                        "support plane in the objects message."};
+const Param<std::string> kLabelsTopic{"labels_topic", "/facet/labels",
+                                      "ROS 2 topic of the label images."};
+const Param<std::string> kObjectsTopic{"objects_topic", "/facet/objects",
+                                       "ROS 2 topic of the facet_msgs/msg/Objects."};
+const Param<std::string> kMarkersTopic{
+    "markers_topic", "/facet/markers",
+    "ROS 2 topic of the visualization_msgs/msg/MarkerArray for RViz."};
+const EnumParam<Qos> kQos{
+    "qos",
+    Qos::reliable,
+    {{Qos::sensor, "sensor"}, {Qos::reliable, "reliable"}},
+    "reliable: reliable writers (matched by reliable and best-effort readers); sensor: "
+    "best effort."};
+const Param<int> kHistoryDepth{
+    "history_depth", 10, "Samples each DDS writer keeps (keep last N).", {.min = 1, .max = 1000}};
+const Param<std::string> kFrameId{
+    "frame_id",
+    "camera_depth_optical_frame",
+    "Header frame_id for frames without a camera frame id of their own (read from "
+    "files or OpenNI2); frames from ros2.subscribe keep the one they came with.",
+    {.origin = "ROS REP 103/105: the optical frame of a depth camera"}};
+const EnumParam<Stamp> kStamp{
+    "stamp",
+    Stamp::frame,
+    {{Stamp::frame, "frame"}, {Stamp::now, "now"}},
+    "frame: the frame's timestamp; now: the system clock when publishing (a recording "
+    "played as a live camera)."};
+const Param<double> kRate{"rate_hz",
+                          0.0,
+                          "Most messages per second per topic; 0 = as fast as frames come.",
+                          {.unit = "Hz", .min = 0.0, .max = 1000.0}};
+const Param<std::int64_t> kWaitForReaders{
+    "wait_for_readers",
+    0,
+    "Readers each topic waits for before its first message; 0 = none.",
+    {.min = 0, .max = 1000}};
+const Param<double> kWaitTimeout{
+    "wait_timeout_s",
+    10.0,
+    "How long to wait for those readers (an error naming the topic after that) and, "
+    "at the end, for reliable readers to acknowledge.",
+    {.unit = "s", .min = 0.0, .max = 3600.0}};
 
 }  // namespace
 
@@ -42,74 +95,36 @@ StageSpec PublishStage::spec() {
       "up to wait_timeout_s for its readers to acknowledge everything. Metric stamp_age_ms: "
       "the time of publishing labels minus their header stamp (publish stamp to labels out "
       "when the stamp came from a camera on this clock).");
-  spec.optional_input<DepthImage>("depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m.")
-      .optional_input<LabelImage>("labels", "Object ids, 0 = background, at most 65535.")
-      .optional_input<ObjectList>("objects", "Object models (shape.superquadric's output).")
-      .optional_input<SupportPlanes>("planes",
-                                     "Support planes, for the coefficients of each object's "
-                                     "support plane in the objects message.")
-      .param("topic", "/camera/depth/image_rect_raw", "ROS 2 topic of the depth images.")
-      .param("camera_info", "",
-             "ROS 2 topic of the camera info; empty = 'camera_info' in the namespace of topic.",
-             {.origin = "ROS camera convention"})
-      .param("labels_topic", "/facet/labels", "ROS 2 topic of the label images.")
-      .param("objects_topic", "/facet/objects", "ROS 2 topic of the facet_msgs/msg/Objects.")
-      .param("markers_topic", "/facet/markers",
-             "ROS 2 topic of the visualization_msgs/msg/MarkerArray for RViz.")
-      .param("domain", -1,
-             "DDS domain (ROS_DOMAIN_ID); -1 = the environment's ROS_DOMAIN_ID, else 0.",
-             {.min = -1, .max = 232})
-      .param("qos", "reliable",
-             "reliable: reliable writers (matched by reliable and best-effort readers); sensor: "
-             "best effort.",
-             {.choices = {std::string("sensor"), std::string("reliable")}})
-      .param("history_depth", 10, "Samples each DDS writer keeps (keep last N).",
-             {.min = 1, .max = 1000})
-      .param("frame_id", "camera_depth_optical_frame",
-             "Header frame_id for frames without a camera frame id of their own (read from "
-             "files or OpenNI2); frames from ros2.subscribe keep the one they came with.",
-             {.origin = "ROS REP 103/105: the optical frame of a depth camera"})
-      .param("stamp", "frame",
-             "frame: the frame's timestamp; now: the system clock when publishing (a recording "
-             "played as a live camera).",
-             {.choices = {std::string("frame"), std::string("now")}})
-      .param("rate_hz", 0.0, "Most messages per second per topic; 0 = as fast as frames come.",
-             {.unit = "Hz", .min = 0.0, .max = 1000.0})
-      .param("wait_for_readers", 0,
-             "Readers each topic waits for before its first message; 0 = none.",
-             {.min = 0, .max = 1000})
-      .param("wait_timeout_s", 10.0,
-             "How long to wait for those readers (an error naming the topic after that) and, "
-             "at the end, for reliable readers to acknowledge.",
-             {.unit = "s", .min = 0.0, .max = 3600.0})
+  spec.declare(kDepth, kLabels, kObjects, kPlanes, kTopic, kCameraInfo, kLabelsTopic, kObjectsTopic,
+               kMarkersTopic, kDomain, kQos, kHistoryDepth, kFrameId, kStamp, kRate,
+               kWaitForReaders, kWaitTimeout)
       .concurrency(Concurrency::serial);
   return spec;
 }
 
 PublishStage::PublishStage(const Params& params)
-    : depth_topic_(params.get_string("topic")),
-      camera_info_topic_(params.get_string("camera_info")),
-      labels_topic_(params.get_string("labels_topic")),
-      objects_topic_(params.get_string("objects_topic")),
-      markers_topic_(params.get_string("markers_topic")),
-      domain_param_(params.get_int("domain")),
-      qos_{params.get_string("qos") == "reliable",
-           static_cast<std::int32_t>(params.get_int("history_depth"))},
-      frame_id_(params.get_string("frame_id")),
-      stamp_now_(params.get_string("stamp") == "now"),
-      rate_hz_(params.get_double("rate_hz")),
-      wait_for_readers_(params.get_int("wait_for_readers")),
-      wait_timeout_s_(params.get_double("wait_timeout_s")) {
+    : depth_topic_(kTopic(params)),
+      camera_info_topic_(kCameraInfo(params)),
+      labels_topic_(kLabelsTopic(params)),
+      objects_topic_(kObjectsTopic(params)),
+      markers_topic_(kMarkersTopic(params)),
+      domain_param_(kDomain(params)),
+      qos_{kQos(params) == Qos::reliable, kHistoryDepth(params)},
+      frame_id_(kFrameId(params)),
+      stamp_now_(kStamp(params) == Stamp::now),
+      rate_hz_(kRate(params)),
+      wait_for_readers_(kWaitForReaders(params)),
+      wait_timeout_s_(kWaitTimeout(params)) {
   if (camera_info_topic_.empty()) camera_info_topic_ = default_camera_info_topic(depth_topic_);
 }
 
 void PublishStage::open(const OpenContext& /*ctx*/) {
   // Names are checked before the first frame, so that a typo stops the run at once.
-  checked_dds_name(depth_topic_, "topic");
-  checked_dds_name(camera_info_topic_, "camera_info");
-  checked_dds_name(labels_topic_, "labels_topic");
-  checked_dds_name(objects_topic_, "objects_topic");
-  checked_dds_name(markers_topic_, "markers_topic");
+  checked_dds_name(depth_topic_, kTopic.name());
+  checked_dds_name(camera_info_topic_, kCameraInfo.name());
+  checked_dds_name(labels_topic_, kLabelsTopic.name());
+  checked_dds_name(objects_topic_, kObjectsTopic.name());
+  checked_dds_name(markers_topic_, kMarkersTopic.name());
   participant_ = create_participant(checked_domain(domain_param_));
 }
 
@@ -156,14 +171,14 @@ void PublishStage::write(const Publication& publication, const void* message) co
 }
 
 void PublishStage::process(ProcessContext& ctx) {
-  const bool has_depth = ctx.has_input("depth");
-  const bool has_labels = ctx.has_input("labels");
-  const bool has_objects = ctx.has_input("objects");
-  if (!has_depth && !has_labels && !has_objects) return;
+  const DepthImage* depth = kDepth(ctx);
+  const LabelImage* labels = kLabels(ctx);
+  const ObjectList* objects = kObjects(ctx);
+  if (depth == nullptr && labels == nullptr && objects == nullptr) return;
   pace();
 
-  if (has_depth) {
-    const auto& input = ctx.input<DepthImage>("depth");
+  if (depth != nullptr) {
+    const DepthImage& input = *depth;
     if (!input.camera.valid()) {
       throw StageError("depth of frame '" + input.frame.stem + "' has no camera intrinsics for '" +
                        camera_info_topic_ + "'");
@@ -180,8 +195,8 @@ void PublishStage::process(ProcessContext& ctx) {
     write(depth_, &image.message());
   }
 
-  if (has_labels) {
-    const auto& input = ctx.input<LabelImage>("labels");
+  if (labels != nullptr) {
+    const LabelImage& input = *labels;
     if (!input.labels.empty()) {
       if (!labels_.writer) labels_ = advertise(sensor_msgs_msg_dds__Image__desc, labels_topic_);
       const std::int64_t stamp_ns = stamp_now_ ? system_now_ns() : input.frame.timestamp_ns;
@@ -191,13 +206,11 @@ void PublishStage::process(ProcessContext& ctx) {
     }
   }
 
-  if (has_objects) publish_objects(ctx);
+  if (objects != nullptr) publish_objects(ctx, *objects);
 }
 
-void PublishStage::publish_objects(ProcessContext& ctx) {
-  const auto& objects = ctx.input<ObjectList>("objects");
-  const SupportPlanes* planes =
-      ctx.has_input("planes") ? &ctx.input<SupportPlanes>("planes") : nullptr;
+void PublishStage::publish_objects(ProcessContext& ctx, const ObjectList& objects) {
+  const SupportPlanes* planes = kPlanes(ctx);
   if (!objects_.writer) {
     objects_ = advertise(facet_msgs_msg_dds__Objects__desc, objects_topic_);
   }

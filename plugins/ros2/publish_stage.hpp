@@ -7,6 +7,7 @@
 
 #include "facet/stage.hpp"
 #include "facet/types/frame.hpp"
+#include "facet/types/geometry.hpp"
 #include "ros2/dds_entities.hpp"
 
 namespace facet::ros2 {
@@ -36,7 +37,7 @@ class PublishStage final : public Stage {
   // The frame's own camera frame id, else the frame_id param.
   const std::string& header_frame_id(const FrameInfo& frame) const;
   void write(const Publication& publication, const void* message) const;
-  void publish_objects(ProcessContext& ctx);
+  void publish_objects(ProcessContext& ctx, const ObjectList& objects);
 
   // Parameters.
   std::string depth_topic_;

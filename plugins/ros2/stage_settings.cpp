@@ -9,6 +9,19 @@
 
 namespace facet::ros2 {
 
+const Param<std::string> kTopic{"topic", "/camera/depth/image_rect_raw",
+                                "ROS 2 topic of the depth images."};
+const Param<std::string> kCameraInfo{
+    "camera_info",
+    "",
+    "ROS 2 topic of the camera info; empty = 'camera_info' in the namespace of topic.",
+    {.origin = "ROS camera convention"}};
+const Param<std::int64_t> kDomain{
+    "domain",
+    -1,
+    "DDS domain (ROS_DOMAIN_ID); -1 = the environment's ROS_DOMAIN_ID, else 0.",
+    {.min = -1, .max = 232}};
+
 std::string checked_dds_name(const std::string& ros_name, const std::string& param) {
   try {
     return dds_topic_name(ros_name);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 
+#include "facet/contract.hpp"
 #include "facet/error.hpp"
 #include "facet/types/images.hpp"
 #include "ros2/depth_messages.hpp"
@@ -19,6 +20,36 @@ constexpr std::size_t kTakeBatch = 16;
 constexpr double kWaitSlice_s = 0.1;
 // camera_infos kept for matching: several seconds of a 30 Hz camera.
 constexpr std::size_t kInfosKept = 256;
+
+// What a CV_32FC1 image in metres becomes.
+enum class OutputUnit { mm, as_received };
+
+const Out<DepthImage> kDepth{"depth",
+                             "Depth, CV_16UC1 in mm (or CV_32FC1 in m when output_unit is "
+                             "as_received), with index, stamp, stem, intrinsics and the header's "
+                             "frame_id."};
+const EnumParam<Qos> kQos{"qos",
+                          Qos::sensor,
+                          {{Qos::sensor, "sensor"}, {Qos::reliable, "reliable"}},
+                          "sensor: best effort, newest frame (live cameras); reliable: reliable, "
+                          "every frame in order."};
+const Param<int> kHistoryDepth{
+    "history_depth",
+    10,
+    "Samples the DDS readers keep (keep last N): with sensor the frames a slow graph "
+    "can count as dropped, with reliable the frames that may queue up unread.",
+    {.min = 1, .max = 1000}};
+const Param<double> kIdleTimeout{"idle_timeout_s",
+                                 0.0,
+                                 "End of stream after this long without a message (counted from "
+                                 "the start too); 0 = never.",
+                                 {.unit = "s", .min = 0.0}};
+const EnumParam<OutputUnit> kOutputUnit{
+    "output_unit",
+    OutputUnit::mm,
+    {{OutputUnit::mm, "mm"}, {OutputUnit::as_received, "as_received"}},
+    "mm: 32FC1 metres are converted to CV_16UC1 mm (NaN, <= 0 and beyond 65.535 m "
+    "become 0); as_received: 32FC1 stays CV_32FC1 in m."};
 
 std::string frame_stem(std::int64_t index) {
   char stem[32];
@@ -70,53 +101,27 @@ StageSpec SubscribeStage::spec() {
       "stamp, on this computer's clock), dropped_frames. A wrong encoding, a data size that is "
       "not step x height, a K without focal lengths or a camera_info of another size stop the "
       "run with an error naming the topic.");
-  spec.output<DepthImage>(
-          "depth",
-          "Depth, CV_16UC1 in mm (or CV_32FC1 in m when output_unit is "
-          "as_received), with index, stamp, stem, intrinsics and the header's frame_id.")
-      .param("topic", "/camera/depth/image_rect_raw", "ROS 2 topic of the depth images.")
-      .param("camera_info", "",
-             "ROS 2 topic of the camera info; empty = 'camera_info' in the namespace of topic.",
-             {.origin = "ROS camera convention"})
-      .param("domain", -1,
-             "DDS domain (ROS_DOMAIN_ID); -1 = the environment's ROS_DOMAIN_ID, else 0.",
-             {.min = -1, .max = 232})
-      .param("qos", "sensor",
-             "sensor: best effort, newest frame (live cameras); reliable: reliable, every frame "
-             "in order.",
-             {.choices = {std::string("sensor"), std::string("reliable")}})
-      .param("history_depth", 10,
-             "Samples the DDS readers keep (keep last N): with sensor the frames a slow graph "
-             "can count as dropped, with reliable the frames that may queue up unread.",
-             {.min = 1, .max = 1000})
-      .param("idle_timeout_s", 0.0,
-             "End of stream after this long without a message (counted from the start too); "
-             "0 = never.",
-             {.unit = "s", .min = 0.0})
-      .param("output_unit", "mm",
-             "mm: 32FC1 metres are converted to CV_16UC1 mm (NaN, <= 0 and beyond 65.535 m "
-             "become 0); as_received: 32FC1 stays CV_32FC1 in m.",
-             {.choices = {std::string("mm"), std::string("as_received")}})
+  spec.declare(kDepth, kTopic, kCameraInfo, kDomain, kQos, kHistoryDepth, kIdleTimeout, kOutputUnit)
       .concurrency(Concurrency::serial);
   return spec;
 }
 
 SubscribeStage::SubscribeStage(const Params& params)
-    : topic_(params.get_string("topic")),
-      camera_info_topic_(params.get_string("camera_info")),
-      domain_param_(params.get_int("domain")),
-      latest_(params.get_string("qos") == "sensor"),
-      qos_{!latest_, static_cast<std::int32_t>(params.get_int("history_depth"))},
-      idle_timeout_s_(params.get_double("idle_timeout_s")),
-      output_mm_(params.get_string("output_unit") == "mm"),
+    : topic_(kTopic(params)),
+      camera_info_topic_(kCameraInfo(params)),
+      domain_param_(kDomain(params)),
+      latest_(kQos(params) == Qos::sensor),
+      qos_{!latest_, kHistoryDepth(params)},
+      idle_timeout_s_(kIdleTimeout(params)),
+      output_mm_(kOutputUnit(params) == OutputUnit::mm),
       // Reliable: up to a reader history of images may wait for their camera_infos.
-      matcher_(static_cast<std::size_t>(params.get_int("history_depth")) + 1, kInfosKept) {
+      matcher_(static_cast<std::size_t>(kHistoryDepth(params)) + 1, kInfosKept) {
   if (camera_info_topic_.empty()) camera_info_topic_ = default_camera_info_topic(topic_);
 }
 
 void SubscribeStage::open(const OpenContext& /*ctx*/) {
-  const std::string image_dds = checked_dds_name(topic_, "topic");
-  const std::string info_dds = checked_dds_name(camera_info_topic_, "camera_info");
+  const std::string image_dds = checked_dds_name(topic_, kTopic.name());
+  const std::string info_dds = checked_dds_name(camera_info_topic_, kCameraInfo.name());
   participant_ = create_participant(checked_domain(domain_param_));
   image_topic_ = create_topic(participant_, sensor_msgs_msg_dds__Image__desc, image_dds, topic_);
   info_topic_ = create_topic(participant_, sensor_msgs_msg_dds__CameraInfo__desc, info_dds,
@@ -201,7 +206,7 @@ void SubscribeStage::process(ProcessContext& ctx) {
   ctx.metric("latency_ms",
              static_cast<double>(frame->image.received_ns - frame->image.stamp_ns) * 1e-6);
   ctx.metric("dropped_frames", static_cast<double>(dropped));
-  ctx.output("depth", std::move(depth));
+  kDepth(ctx, std::move(depth));
 }
 
 void SubscribeStage::close() {

@@ -1,18 +1,43 @@
 #include "track/track_labels.hpp"
 
 #include <stdexcept>
+#include <string>
 
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::track {
 namespace {
 
+const In<LabelImage> kLabelsIn{"labels", "Segment ids of the frame (0 = none), CV_32SC1."};
+const Out<LabelImage> kLabelsOut{"labels",
+                                 "The same segments with their track ids (0 = none); count = the "
+                                 "largest id given so far."};
+const EnumParam<eval::OverlapMeasure> kMeasure{
+    "measure",
+    eval::OverlapMeasure::mean_ratio,
+    {{eval::OverlapMeasure::mean_ratio, "mean_ratio"}, {eval::OverlapMeasure::iou, "iou"}},
+    "Overlap of a segment i and a track j: mean_ratio = (|i&j|/|i| + |i&j|/|j|) / 2, "
+    "iou = |i&j| / |i|j|.",
+    {.origin = "mean_ratio: the authors' later code"}};
+const Param<double> kMinOverlap{
+    "min_overlap",
+    0.3,
+    "A segment continues a track when their overlap is above this.",
+    {.min = 0.0, .max = 1.0, .origin = "not tuned: well below the ~0.95 of a static scene"}};
+const Param<std::int64_t> kMemoryFrames{
+    "memory_frames",
+    10,
+    "Frames a lost track is remembered and can still be continued; 0 = forgotten the "
+    "first frame it is not seen.",
+    {.unit = "frames", .min = 0, .origin = "not tuned: 1/3 s at 30 Hz"}};
+
 TrackOptions options_from(const Params& params) {
   TrackOptions options;
-  options.measure = eval::parse_overlap_measure(params.get_string("measure"), "measure");
-  options.min_overlap = params.get_double("min_overlap");
-  options.memory_frames = params.get_int("memory_frames");
+  options.measure = kMeasure(params);
+  options.min_overlap = kMinOverlap(params);
+  options.memory_frames = kMemoryFrames(params);
   return options;
 }
 
@@ -28,29 +53,14 @@ StageSpec TrackLabels::spec() {
                    "finds no segment keeps the pixels it last had for memory_frames frames and can "
                    "be continued within them. Deterministic. Reports tracks (segments this frame), "
                    "new_tracks and remembered (tracks kept, seen or lost).")
-      .input<LabelImage>("labels", "Segment ids of the frame (0 = none), CV_32SC1.")
-      .output<LabelImage>("labels",
-                          "The same segments with their track ids (0 = none); count = the "
-                          "largest id given so far.")
-      .param("measure", "mean_ratio",
-             "Overlap of a segment i and a track j: mean_ratio = (|i&j|/|i| + |i&j|/|j|) / 2, "
-             "iou = |i&j| / |i|j|.",
-             {.choices = {std::string("mean_ratio"), std::string("iou")},
-              .origin = "mean_ratio: the authors' later code"})
-      .param(
-          "min_overlap", 0.3, "A segment continues a track when their overlap is above this.",
-          {.min = 0.0, .max = 1.0, .origin = "not tuned: well below the ~0.95 of a static scene"})
-      .param("memory_frames", 10,
-             "Frames a lost track is remembered and can still be continued; 0 = forgotten the "
-             "first frame it is not seen.",
-             {.unit = "frames", .min = 0, .origin = "not tuned: 1/3 s at 30 Hz"})
+      .declare(kLabelsIn, kLabelsOut, kMeasure, kMinOverlap, kMemoryFrames)
       .concurrency(Concurrency::serial);
 }
 
 TrackLabels::TrackLabels(const Params& params) : tracker_(options_from(params)) {}
 
 void TrackLabels::process(ProcessContext& ctx) {
-  const LabelImage& input = ctx.input<LabelImage>("labels");
+  const LabelImage& input = kLabelsIn(ctx);
   require_type(input.labels, CV_32SC1, "labels");
   const std::int32_t largest_before = tracker_.largest_id();
   LabelImage tracked;
@@ -78,7 +88,7 @@ void TrackLabels::process(ProcessContext& ctx) {
   ctx.metric("tracks", segments);
   ctx.metric("new_tracks", static_cast<double>(tracker_.largest_id() - largest_before));
   ctx.metric("remembered", static_cast<double>(tracker_.remembered_tracks()));
-  ctx.output("labels", std::move(tracked));
+  kLabelsOut(ctx, std::move(tracked));
 }
 
 }  // namespace facet::track
