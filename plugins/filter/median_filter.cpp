@@ -6,10 +6,43 @@
 #include <stdexcept>
 #include <string>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::filters {
 namespace {
+
+const In<DepthImage> kDepthIn{"depth",
+                              "Depth image, CV_16UC1 in mm (0 = invalid) or CV_32FC1 in m "
+                              "(0 or NaN = invalid)."};
+const Out<DepthImage> kDepthOut{"depth",
+                                "Filtered depth, same type, size and header as the input."};
+const Param<int> kSize{"size",
+                       3,
+                       "Side length of the square window.",
+                       {.unit = "px",
+                        .choices = {std::int64_t{3}, std::int64_t{5}},
+                        .origin = "3 removes single-pixel speckle of structured-light sensors "
+                                  "while keeping object edges sharp; 5 also smooths quantisation "
+                                  "steps"}};
+const Param<bool> kFillHoles{"fill_holes",
+                             false,
+                             "Give an invalid pixel the median of its window when more than half "
+                             "of the window is valid (closes pinholes; off keeps every hole as "
+                             "measured).",
+                             {.origin = "off: later stages should see only measured depth"}};
+const Param<double> kMaxPinholeRatio{
+    "max_pinhole_ratio",
+    0.005,
+    "With fill_holes off, warn when more than this share of the valid pixels are "
+    "pinholes: invalid pixels whose four neighbours are valid (sampled on every 4th "
+    "row; also the metric pinhole_ratio). Each pinhole breaks the surfaces around it "
+    "into fragments; fill_holes closes them. 1 never warns.",
+    {.unit = "fraction",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "measured: the bundled mOSD and YCB-Video frames have under 0.01 %; "
+               "from 1 % on, synthetic tabletop frames lose objects"}};
 
 // Pinholes are sampled on every kPinholeRowStep-th row: the count only feeds a metric and a
 // warning, and a quarter of the rows costs a fraction of the filter itself.
@@ -52,45 +85,22 @@ PinholeCount count_pinholes(const cv::Mat& depth) {
 }  // namespace
 
 StageSpec MedianFilter::spec() {
-  return StageSpec("filter.median",
-                   "Median filter over the valid pixels of each window.\n"
-                   "Invalid pixels (0, NaN) are ignored: they never pull a median towards zero. "
-                   "A pixel that is itself invalid stays invalid unless fill_holes is set, so "
-                   "the filter removes noise without inventing depth in holes. Pixels outside "
-                   "the image count as invalid. With an even number of valid values the lower "
-                   "middle value is taken, so every output is a measured depth.")
-      .input<DepthImage>("depth",
-                         "Depth image, CV_16UC1 in mm (0 = invalid) or CV_32FC1 in m "
-                         "(0 or NaN = invalid).")
-      .output<DepthImage>("depth", "Filtered depth, same type, size and header as the input.")
-      .param("size", 3, "Side length of the square window.",
-             {.unit = "px",
-              .choices = {std::int64_t{3}, std::int64_t{5}},
-              .origin = "3 removes single-pixel speckle of structured-light sensors while "
-                        "keeping object edges sharp; 5 also smooths quantisation steps"})
-      .param("fill_holes", false,
-             "Give an invalid pixel the median of its window when more than half of the "
-             "window is valid (closes pinholes; off keeps every hole as measured).",
-             {.origin = "off: later stages should see only measured depth"})
-      .param("max_pinhole_ratio", 0.005,
-             "With fill_holes off, warn when more than this share of the valid pixels are "
-             "pinholes: invalid pixels whose four neighbours are valid (sampled on every 4th "
-             "row; also the metric pinhole_ratio). Each pinhole breaks the surfaces around it "
-             "into fragments; fill_holes closes them. 1 never warns.",
-             {.unit = "fraction",
-              .min = 0.0,
-              .max = 1.0,
-              .origin = "measured: the bundled mOSD and YCB-Video frames have under 0.01 %; "
-                        "from 1 % on, synthetic tabletop frames lose objects"})
+  StageSpec spec("filter.median",
+                 "Median filter over the valid pixels of each window.\n"
+                 "Invalid pixels (0, NaN) are ignored: they never pull a median towards zero. "
+                 "A pixel that is itself invalid stays invalid unless fill_holes is set, so "
+                 "the filter removes noise without inventing depth in holes. Pixels outside "
+                 "the image count as invalid. With an even number of valid values the lower "
+                 "middle value is taken, so every output is a measured depth.");
+  return spec.declare(kDepthIn, kDepthOut, kSize, kFillHoles, kMaxPinholeRatio)
       .concurrency(Concurrency::clonable);
 }
 
 MedianFilter::MedianFilter(const Params& params)
-    : median_(static_cast<int>(params.get_int("size")), params.get_bool("fill_holes")),
-      max_pinhole_ratio_(params.get_double("max_pinhole_ratio")) {}
+    : median_(kSize(params), kFillHoles(params)), max_pinhole_ratio_(kMaxPinholeRatio(params)) {}
 
 void MedianFilter::process(ProcessContext& ctx) {
-  const auto& input = ctx.input<DepthImage>("depth");
+  const DepthImage& input = kDepthIn(ctx);
   if (input.depth.empty()) throw StageError("input depth image is empty");
   DepthImage output;
   static_cast<FrameHeader&>(output) = input;
@@ -100,7 +110,7 @@ void MedianFilter::process(ProcessContext& ctx) {
     throw StageError(error.what());
   }
   if (!median_.fill_holes()) warn_about_pinholes(input.depth, ctx);
-  ctx.output("depth", std::move(output));
+  kDepthOut(ctx, std::move(output));
 }
 
 void MedianFilter::warn_about_pinholes(const cv::Mat& depth, ProcessContext& ctx) const {

@@ -1,11 +1,13 @@
 #include "grow/grow_surfaces.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
 #include <utility>
 
 #include "facet/algo/patch_contacts.hpp"
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
@@ -13,74 +15,91 @@
 #include "grow/surface_regions.hpp"
 
 namespace facet::grow {
+namespace {
+
+const In<EdgeImage> kEdges{"edges", "Edge decision; only `mask` is used (255 = edge)."};
+const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."};
+const Out<LabelImage> kPatches{"patches",
+                               "CV_32SC1 patch ids 1..count; 0 = invalid point, or edge/small-"
+                               "region pixel that no patch claimed."};
+const Out<PatchAdjacency> kAdjacency{"adjacency",
+                                     "Pairs (a < b, sorted) of patches that touch (8-neighbours "
+                                     "after assignment); contact_px = touching pixel pairs."};
+const Param<int> kConnectivity{
+    "connectivity",
+    4,
+    "Neighbourhood of the flood fill. 4 cannot leak through a one-pixel diagonal gap "
+    "in an edge line; 8 joins diagonally touching pixels.",
+    {.choices = {std::int64_t{4}, std::int64_t{8}},
+     .origin = "authors' later code (their 2012 code used 8)"}};
+const Param<std::int64_t> kMinSize{
+    "min_size_px",
+    100,
+    "Regions smaller than this go back to the unassigned pool (noise between edges). "
+    "A pixel count: it scales with the image area (x4 from 320x240 to 640x480).",
+    {.unit = "px",
+     .min = 1.0,
+     .max = 1.0e7,
+     .origin = "authors' later code: 25 px at 320x240, scaled x4 for 640x480"}};
+const Param<int> kAssignRadius{
+    "assign_radius_px",
+    5,
+    "rho: the most steps (rounds) an unassigned pixel may be from a patch. The edge "
+    "band around a crease is about (normal radius + edge pixels) = 5 px wide on each "
+    "side whatever the resolution, so 5 reaches the band's middle from either side. 0 "
+    "disables the assignment.",
+    {.unit = "px", .min = 0.0, .max = 250.0, .origin = "authors' later code (rho = 5)"}};
+const Param<double> kAssignMaxDistance{
+    "assign_max_distance_m",
+    0.01,
+    "3D gate of each assignment step: a pixel only takes the label of a neighbour "
+    "closer than this, so the two sides of a depth step keep to their own surfaces.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "authors' later code used 10-15 mm; 10 mm = the paper's blob distance "
+               "(Delta_blob), the same neighbour-to-neighbour linkage"}};
+const Param<double> kMaxUnassignedRatio{
+    "max_unassigned_ratio",
+    0.25,
+    "Warn when more than this share of the valid pixels ends up in no patch.",
+    {.min = 0.0,
+     .max = 1.0,
+     .origin = "measured: 0.004-0.06 on the bundled frames, 0.3-0.8 on noisy frames "
+               "and grids of 2.5 cm boxes"}};
+
+}  // namespace
+
 StageSpec GrowSurfaces::spec() {
-  return StageSpec(
-             "grow.surfaces",
-             "Region growing of surface pixels into patches, then edge pixels join a patch.\n"
-             "1. Flood fill: connected non-edge pixels with a valid point form a region; "
-             "regions under min_size_px return to the unassigned pool. 2. One assignment pass, "
-             "breadth-first from the patches in rounds 1..assign_radius_px: in round r every "
-             "unassigned pixel with a valid point that has an 8-neighbour labelled before round "
-             "r takes the label of the neighbour nearest in 3D, if that neighbour is closer "
-             "than assign_max_distance_m. A pixel thus joins the patch it is fewest steps from "
-             "(within the (2*rho+1)^2 window), along steps that never jump a depth step. 3. Two "
-             "patches are adjacent when a pixel of one has a pixel of the other among its 8 "
-             "neighbours.\n"
-             "Patch ids follow the raster order of each patch's first surface pixel (before "
-             "step 2).")
-      .input<EdgeImage>("edges", "Edge decision; only `mask` is used (255 = edge).")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .output<LabelImage>("patches",
-                          "CV_32SC1 patch ids 1..count; 0 = invalid point, or edge/small-region "
-                          "pixel that no patch claimed.")
-      .output<PatchAdjacency>("adjacency",
-                              "Pairs (a < b, sorted) of patches that touch (8-neighbours after "
-                              "assignment); contact_px = touching pixel pairs.")
-      .param("connectivity", 4,
-             "Neighbourhood of the flood fill. 4 cannot leak through a one-pixel diagonal gap "
-             "in an edge line; 8 joins diagonally touching pixels.",
-             {.choices = {std::int64_t{4}, std::int64_t{8}},
-              .origin = "authors' later code (their 2012 code used 8)"})
-      .param("min_size_px", 100,
-             "Regions smaller than this go back to the unassigned pool (noise between edges). "
-             "A pixel count: it scales with the image area (x4 from 320x240 to 640x480).",
-             {.unit = "px",
-              .min = 1.0,
-              .max = 1.0e7,
-              .origin = "authors' later code: 25 px at 320x240, scaled x4 for 640x480"})
-      .param("assign_radius_px", 5,
-             "rho: the most steps (rounds) an unassigned pixel may be from a patch. The edge "
-             "band around a crease is about (normal radius + edge pixels) = 5 px wide on each "
-             "side whatever the resolution, so 5 reaches the band's middle from either side. 0 "
-             "disables the assignment.",
-             {.unit = "px", .min = 0.0, .max = 250.0, .origin = "authors' later code (rho = 5)"})
-      .param("assign_max_distance_m", 0.01,
-             "3D gate of each assignment step: a pixel only takes the label of a neighbour "
-             "closer than this, so the two sides of a depth step keep to their own surfaces.",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 1.0,
-              .origin = "authors' later code used 10-15 mm; 10 mm = the paper's blob distance "
-                        "(Delta_blob), the same neighbour-to-neighbour linkage"})
-      .param("max_unassigned_ratio", 0.25,
-             "Warn when more than this share of the valid pixels ends up in no patch.",
-             {.min = 0.0,
-              .max = 1.0,
-              .origin = "measured: 0.004-0.06 on the bundled frames, 0.3-0.8 on noisy frames "
-                        "and grids of 2.5 cm boxes"})
+  StageSpec spec(
+      "grow.surfaces",
+      "Region growing of surface pixels into patches, then edge pixels join a patch.\n"
+      "1. Flood fill: connected non-edge pixels with a valid point form a region; "
+      "regions under min_size_px return to the unassigned pool. 2. One assignment pass, "
+      "breadth-first from the patches in rounds 1..assign_radius_px: in round r every "
+      "unassigned pixel with a valid point that has an 8-neighbour labelled before round "
+      "r takes the label of the neighbour nearest in 3D, if that neighbour is closer "
+      "than assign_max_distance_m. A pixel thus joins the patch it is fewest steps from "
+      "(within the (2*rho+1)^2 window), along steps that never jump a depth step. 3. Two "
+      "patches are adjacent when a pixel of one has a pixel of the other among its 8 "
+      "neighbours.\n"
+      "Patch ids follow the raster order of each patch's first surface pixel (before "
+      "step 2).");
+  return spec
+      .declare(kEdges, kPoints, kPatches, kAdjacency, kConnectivity, kMinSize, kAssignRadius,
+               kAssignMaxDistance, kMaxUnassignedRatio)
       .concurrency(Concurrency::clonable);
 }
 
 GrowSurfaces::GrowSurfaces(const Params& params)
-    : connectivity_(static_cast<int>(params.get_int("connectivity"))),
-      min_size_px_(params.get_int("min_size_px")),
-      max_unassigned_ratio_(params.get_double("max_unassigned_ratio")),
-      assignment_(AssignmentRule{static_cast<int>(params.get_int("assign_radius_px")),
-                                 params.get_double("assign_max_distance_m")}) {}
+    : connectivity_(kConnectivity(params)),
+      min_size_px_(kMinSize(params)),
+      max_unassigned_ratio_(kMaxUnassignedRatio(params)),
+      assignment_(AssignmentRule{kAssignRadius(params), kAssignMaxDistance(params)}) {}
 
 void GrowSurfaces::process(ProcessContext& ctx) {
-  const auto& edges = ctx.input<EdgeImage>("edges");
-  const auto& points = ctx.input<PointImage>("points");
+  const EdgeImage& edges = kEdges(ctx);
+  const PointImage& points = kPoints(ctx);
   if (edges.mask.empty() || edges.mask.type() != CV_8UC1) {
     throw StageError("input edges.mask must be a non-empty CV_8UC1 image");
   }
@@ -114,8 +133,8 @@ void GrowSurfaces::process(ProcessContext& ctx) {
              "depth, many holes (filter.median fill_holes), or surfaces smaller than "
              "min_size_px between edges (objects too small or too far away)");
   }
-  ctx.output("patches", std::move(patches));
-  ctx.output("adjacency", std::move(adjacency));
+  kPatches(ctx, std::move(patches));
+  kAdjacency(ctx, std::move(adjacency));
 }
 
 }  // namespace facet::grow

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "facet/algo/patch_contacts.hpp"
+#include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
@@ -22,6 +23,232 @@
 
 namespace facet::planes {
 namespace {
+
+const In<LabelImage> kPatchesIn{"patches",
+                                "Surface patches, CV_32SC1 ids 1..count (grow.surfaces)."};
+const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."};
+const Out<SupportPlanes> kPlanes{
+    "planes",
+    "Support planes (ids 1..N, largest candidate first; normal towards "
+    "the camera, inliers, rms, horizontal, role: table, floor or wall), "
+    "world up, the table's id and its outline."};
+const Out<LabelImage> kPlaneLabels{"plane_labels", "CV_32SC1 plane id per pixel, 0 = on no plane."};
+const Out<LabelImage> kPatchesOut{
+    "patches",
+    "The input patches with plane points and dropped segments set to 0; "
+    "ids kept (ids may now be unused); the pieces a plane cut off a "
+    "patch numbered from the input's count + 1 on."};
+const Out<PatchAdjacency> kAdjacency{"adjacency",
+                                     "Pairs (a < b, sorted) of the output patches that touch "
+                                     "(8-neighbours), as grow.surfaces' adjacency, for the patches "
+                                     "left."};
+const Param<double> kDistance{
+    "distance_m",
+    0.010,
+    "delta: a point closer than this to a support plane belongs to it. RANSAC scores "
+    "its hypotheses at delta / 2.",
+    {.unit = "m",
+     .min = 0.001,
+     .max = 0.5,
+     .origin = "paper: 12 mm; swept 8-14 mm: 10 mm lies on the plateau of mOSD and of "
+               "both generated sets, 12 mm not on that of the tuning set "
+               "(docs/evaluation.md)"}};
+const Param<int> kRansacIterations{
+    "ransac_iterations",
+    20,
+    "Random 3-point hypotheses per candidate. Samples come from one surface patch, "
+    "which is nearly all plane, so a few suffice.",
+    {.min = 1.0, .max = 10000.0, .origin = "authors' code (20)"}};
+const Param<std::int64_t> kCandidateMinSize{
+    "candidate_min_px",
+    2500,
+    "N_bg: patches with at least this many valid points are plane candidates. Low "
+    "enough for wall and floor fragments at the edge of the view; box faces among "
+    "the candidates are rejected by the support test, not by size. A pixel count: "
+    "scale it with the image area (x1/4 at 320x240).",
+    {.unit = "px",
+     .min = 3.0,
+     .max = 1.0e8,
+     .origin = "paper's N_bg = 2500, here at 640x480 (the authors' 320x240 value x4, "
+               "10000, leaves wall fragments of the uncropped OSD frame as objects)"}};
+const Param<int> kMaxCandidates{
+    "max_candidates",
+    16,
+    "The largest this many candidates are fitted and judged.",
+    {.min = 1.0,
+     .max = 32.0,
+     .origin = "measured: the 45 mOSD frames have at most 8 patches over 10000 px"}};
+const Param<std::int64_t> kFitMaxPoints{
+    "fit_max_points",
+    10000,
+    "A candidate's plane is fitted (RANSAC and least-squares refit) to at most this "
+    "many of its points, every k-th in raster order.",
+    {.min = 3.0,
+     .max = 1.0e8,
+     .origin = "measured: same planes and scores on mOSD as with all points, a "
+               "fraction of the time"}};
+const Param<double> kObjectFaceOffPlaneFraction{
+    "object_face_off_plane_fraction",
+    0.5,
+    "A patch with at least this share of its points more than 2 distance_m from every "
+    "support plane is an object face: its points within distance_m of a plane stay "
+    "with it (the bottom band of an object standing on the table). So is a patch whose "
+    "points near a horizontal plane lie on average more than min_object_height_m above "
+    "it (a book 1 cm thick). Other points within distance_m join the plane. Above 1, "
+    "only the height test keeps points from the planes.",
+    {.min = 0.0,
+     .max = 2.0,
+     .origin = "measured on mOSD: recall of objects' lower borders (docs/planes.md)"}};
+const Param<double> kMinViewFraction{
+    "min_view_fraction",
+    0.01,
+    "A plane that is not the dominant horizontal one must hold at least this share of "
+    "the valid pixels (sampled, within distance_m) to be background.",
+    {.min = 0.0,
+     .max = 1.0,
+     .origin = "measured: the wall fragment of the uncropped OSD frame holds 0.02"}};
+const Param<double> kMaxBehindFraction{
+    "max_behind_fraction",
+    0.05,
+    "A plane that is not the dominant horizontal one is background only if at most "
+    "this share of the object candidates lies behind it.",
+    {.min = 0.0, .max = 1.0, .origin = "measured on mOSD and the uncropped OSD frame"}};
+const Param<double> kBehindMargin{
+    "behind_margin_m",
+    0.05,
+    "A point counts as behind a plane when it is further than this on the plane's far "
+    "side: sensor noise, mixed pixels and the front edge of a table top (a few cm "
+    "thick) stay within it, while a box's far side lies beyond.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "measured: 0.03 and 0.05 score alike on mOSD and the uncropped OSD "
+               "frame; 0.05 keeps a 4 cm table top in front of a dominant floor"}};
+const Param<double> kMinObjectFraction{
+    "min_object_fraction",
+    0.02,
+    "Floor of the behind-test denominator, as a share of the valid pixels, so that a "
+    "few stray points do not veto a plane when almost nothing else is left.",
+    {.min = 0.0, .max = 1.0, .origin = "measured"}};
+const Param<double> kMaxSupportBehindFraction{
+    "max_support_behind_fraction",
+    0.1,
+    "An object face stands on the table: a candidate with more than this share of the "
+    "dominant plane's points behind it is not background (unless it holds "
+    "large_view_fraction of the view).",
+    {.min = 0.0, .max = 1.0, .origin = "measured on mOSD and the uncropped OSD frame"}};
+const Param<double> kLargeViewFraction{
+    "large_view_fraction",
+    0.15,
+    "Horizontal candidates (within horizontal_max_deg of up) holding this share of the "
+    "valid pixels skip the max_support_behind_fraction test (a table seen above a "
+    "dominant floor); a large vertical face standing on the table stays an object.",
+    {.min = 0.0, .max = 1.0, .origin = "measured: mOSD box faces hold at most 0.13"}};
+const Param<int> kSampleStride{
+    "sample_stride_px",
+    4,
+    "The support test looks at every n-th row and column (the assignment to planes "
+    "is always per pixel).",
+    {.unit = "px",
+     .min = 1.0,
+     .max = 16.0,
+     .origin = "measured: the same decisions at 1, 2 and 4 on mOSD and the uncropped "
+               "OSD frame; 4 reads 1/16 of the points"}};
+const Param<double> kMinObjectHeight{
+    "min_object_height_m",
+    0.006,
+    "Scene model: horizontal candidates whose centroids lie within this height of one "
+    "another's plane are one level (the fragments of one table top); a level or a patch "
+    "raised above the table by more is the top of an object lying on it. The smallest "
+    "thickness of a flat object that is found (with Kinect noise at 1 m: about 1 cm).",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 0.1,
+     .origin = "measured: plateau of generated scenes with books 1-4 cm thick "
+               "(docs/evaluation.md)"}};
+const Param<double> kMaxObjectHeight{
+    "max_object_height_m",
+    0.3,
+    "Scene model: a horizontal level raised above the table by up to this much is an "
+    "object top; farther above, and holding large_view_fraction of the view, it is a "
+    "table above the floor. A level this much or less below the largest one, holding "
+    "min_table_fraction, is the table that level stands on.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 10.0,
+     .origin = "tables stand 0.4 m and more above the floor; objects for a gripper are "
+               "lower"}};
+const Param<double> kMinTableFraction{
+    "min_table_fraction",
+    0.05,
+    "Scene model: the least share of the valid pixels that a level below the largest "
+    "one needs to be taken for the table (the largest level is then a board lying on "
+    "it).",
+    {.min = 0.0, .max = 1.0, .origin = "measured on generated crowded tables"}};
+const Param<double> kHorizontalMaxAngle{
+    "horizontal_max_deg",
+    10.0,
+    "alpha_z: a plane is horizontal when its normal is within this angle of world up.",
+    {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "paper (10 deg)"}};
+const Param<WorldUp> kUp{
+    "up",
+    WorldUp{},
+    "World up in the camera frame: 'auto' takes the normal of the largest candidate "
+    "within up_prior_max_deg of the camera's up (-y); or a vector 'x,y,z' (camera "
+    "frame: x right, y down, z forward), e.g. '0,-1,0' for a level camera.",
+    {.origin = "ALGORITHM.md: from a parameter or the dominant horizontal plane"}};
+const Param<double> kUpPriorMaxAngle{
+    "up_prior_max_deg",
+    80.0,
+    "auto up: the dominant horizontal plane is the largest candidate whose normal is "
+    "within this angle of the camera's -y axis (a camera looking down at a table at "
+    "up to this pitch). A wall facing a camera pitched down lies more than 90 deg from "
+    "it. With a given up, horizontal_max_deg is used instead.",
+    {.unit = "deg",
+     .min = 0.0,
+     .max = 90.0,
+     .origin = "mOSD tables 25-50 deg; generated views pitched down 30-70 deg (60 lost "
+               "the table of every view pitched more steeply, docs/evaluation.md)"}};
+const Param<std::int64_t> kMinSegmentSize{
+    "min_segment_px",
+    20,
+    "N_seg: patches left with fewer points than this are dropped (set to 0).",
+    {.unit = "px", .min = 0.0, .max = 1.0e6, .origin = "paper: N_seg = 5 at 320x240, x4"}};
+const Param<double> kSplitMaxDistance{
+    "split_max_distance_m",
+    0.01,
+    "Gate of the split of what a plane leaves of a patch: two of its pixels are one "
+    "piece when they are 8-neighbours closer than this in 3D (growing with the square "
+    "of the depth beyond split_growth_start_m).",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "grow.blobs' Delta_blob (the same neighbour linkage)"}};
+const Param<double> kSplitGrowthStart{
+    "split_growth_start_m",
+    1.2,
+    "Beyond this depth split_max_distance_m grows with the square of the depth; 0 "
+    "keeps it fixed.",
+    {.unit = "m", .min = 0.0, .max = 100.0, .origin = "grow.blobs' distance_growth_start_m"}};
+const Param<int> kPlanesPerPatch{
+    "planes_per_patch",
+    2,
+    "Planes fitted to one candidate patch: what a fit leaves more than 2 distance_m "
+    "off its plane, when that is at least candidate_min_px, is fitted again (a fit "
+    "within horizontal_max_deg and 2 distance_m of the one before is the same plane "
+    "and ends the search). Where no normal edge parts them, one patch spans a far table "
+    "and the wall behind it; one plane per patch then finds only the wall, and the "
+    "frame loses its table. 1 = the paper's one plane per patch.",
+    {.min = 1.0,
+     .max = 4.0,
+     .origin = "2: generated checking set with PCA normals 0.835 -> 0.890 (seed 1008's "
+               "view lost its table); the default graph's figures unchanged within "
+               "0.001 (docs/planes.md)"}};
+const Param<std::int64_t> kSeed{
+    "seed",
+    1,
+    "Seed of the RANSAC random numbers, reset every frame.",
+    {.min = 0.0, .max = 4294967295.0, .origin = "any; fixed for reproducible results"}};
 
 // The table's outline is the hull of the points on every 8th row and column: a few thousand of
 // them, whose hull is within a few millimetres of the full one.
@@ -93,253 +320,82 @@ std::vector<char> table_patches(const PlaneAssignment& assignment,
 }  // namespace
 
 StageSpec SupportPlaneStage::spec() {
-  return StageSpec(
-             "planes.support",
-             "Support and background planes (table, floor, walls) from large surface patches.\n"
-             "Paper sec. II-B d. Every patch of at least candidate_min_px valid points is a "
-             "candidate (largest first, at most max_candidates): a plane is fitted to it by "
-             "ransac_iterations random point triples of the patch, scored at distance_m / 2, "
-             "then refitted by least squares. The scene model (docs/planes.md) first picks the "
-             "table: horizontal candidates are grouped into levels (centroids within "
-             "min_object_height_m of one plane); the largest level is the table, unless a level "
-             "far above it (max_object_height_m) holds large_view_fraction of the view (a table "
-             "above the floor) or a level a little below it holds min_table_fraction (the "
-             "largest level is then a board or box lying on that table). Levels raised above "
-             "the table by up to max_object_height_m are object tops (books, trays, boxes lying "
-             "flat) and never support planes. Any other candidate becomes a background plane "
-             "when it covers at least min_view_fraction of the valid pixels and at most "
-             "max_behind_fraction of the object candidates (points on no support plane) lie "
-             "more than behind_margin_m behind it; this is re-evaluated until nothing changes, "
-             "so a table is accepted once the floor and walls behind it are. Box faces fail: "
-             "the rest of their box lies behind them. Then, largest first, every valid point "
-             "not yet taken within distance_m of a support plane joins it, also out of its "
-             "patch, except the points of object faces. What a plane leaves of a patch is split "
-             "into its connected pieces (8-neighbours closer than split_max_distance_m), each a "
-             "patch of its own: a table patch that ran onto the tops of objects leaves one "
-             "piece per top, not one patch spanning them. Patches left with fewer than "
-             "min_segment_px points are dropped. The table's visible extent (a convex outline) "
-             "goes with the planes, for grow.blobs.")
-      .input<LabelImage>("patches", "Surface patches, CV_32SC1 ids 1..count (grow.surfaces).")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .output<SupportPlanes>("planes",
-                             "Support planes (ids 1..N, largest candidate first; normal towards "
-                             "the camera, inliers, rms, horizontal, role: table, floor or wall), "
-                             "world up, the table's id and its outline.")
-      .output<LabelImage>("plane_labels", "CV_32SC1 plane id per pixel, 0 = on no plane.")
-      .output<LabelImage>("patches",
-                          "The input patches with plane points and dropped segments set to 0; "
-                          "ids kept (ids may now be unused); the pieces a plane cut off a "
-                          "patch numbered from the input's count + 1 on.")
-      .output<PatchAdjacency>("adjacency",
-                              "Pairs (a < b, sorted) of the output patches that touch "
-                              "(8-neighbours), as grow.surfaces' adjacency, for the patches "
-                              "left.")
-      .param("distance_m", 0.010,
-             "delta: a point closer than this to a support plane belongs to it. RANSAC scores "
-             "its hypotheses at delta / 2.",
-             {.unit = "m",
-              .min = 0.001,
-              .max = 0.5,
-              .origin = "paper: 12 mm; swept 8-14 mm: 10 mm lies on the plateau of mOSD and of "
-                        "both generated sets, 12 mm not on that of the tuning set "
-                        "(docs/evaluation.md)"})
-      .param("ransac_iterations", 20,
-             "Random 3-point hypotheses per candidate. Samples come from one surface patch, "
-             "which is nearly all plane, so a few suffice.",
-             {.min = 1.0, .max = 10000.0, .origin = "authors' code (20)"})
-      .param("candidate_min_px", 2500,
-             "N_bg: patches with at least this many valid points are plane candidates. Low "
-             "enough for wall and floor fragments at the edge of the view; box faces among "
-             "the candidates are rejected by the support test, not by size. A pixel count: "
-             "scale it with the image area (x1/4 at 320x240).",
-             {.unit = "px",
-              .min = 3.0,
-              .max = 1.0e8,
-              .origin = "paper's N_bg = 2500, here at 640x480 (the authors' 320x240 value x4, "
-                        "10000, leaves wall fragments of the uncropped OSD frame as objects)"})
-      .param("max_candidates", 16, "The largest this many candidates are fitted and judged.",
-             {.min = 1.0,
-              .max = 32.0,
-              .origin = "measured: the 45 mOSD frames have at most 8 patches over 10000 px"})
-      .param("fit_max_points", 10000,
-             "A candidate's plane is fitted (RANSAC and least-squares refit) to at most this "
-             "many of its points, every k-th in raster order.",
-             {.min = 3.0,
-              .max = 1.0e8,
-              .origin = "measured: same planes and scores on mOSD as with all points, a "
-                        "fraction of the time"})
-      .param("object_face_off_plane_fraction", 0.5,
-             "A patch with at least this share of its points more than 2 distance_m from every "
-             "support plane is an object face: its points within distance_m of a plane stay "
-             "with it (the bottom band of an object standing on the table). So is a patch whose "
-             "points near a horizontal plane lie on average more than min_object_height_m above "
-             "it (a book 1 cm thick). Other points within distance_m join the plane. Above 1, "
-             "only the height test keeps points from the planes.",
-             {.min = 0.0,
-              .max = 2.0,
-              .origin = "measured on mOSD: recall of objects' lower borders (docs/planes.md)"})
-      .param("min_view_fraction", 0.01,
-             "A plane that is not the dominant horizontal one must hold at least this share of "
-             "the valid pixels (sampled, within distance_m) to be background.",
-             {.min = 0.0,
-              .max = 1.0,
-              .origin = "measured: the wall fragment of the uncropped OSD frame holds 0.02"})
-      .param("max_behind_fraction", 0.05,
-             "A plane that is not the dominant horizontal one is background only if at most "
-             "this share of the object candidates lies behind it.",
-             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD and the uncropped OSD frame"})
-      .param("behind_margin_m", 0.05,
-             "A point counts as behind a plane when it is further than this on the plane's far "
-             "side: sensor noise, mixed pixels and the front edge of a table top (a few cm "
-             "thick) stay within it, while a box's far side lies beyond.",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 1.0,
-              .origin = "measured: 0.03 and 0.05 score alike on mOSD and the uncropped OSD "
-                        "frame; 0.05 keeps a 4 cm table top in front of a dominant floor"})
-      .param("min_object_fraction", 0.02,
-             "Floor of the behind-test denominator, as a share of the valid pixels, so that a "
-             "few stray points do not veto a plane when almost nothing else is left.",
-             {.min = 0.0, .max = 1.0, .origin = "measured"})
-      .param("max_support_behind_fraction", 0.1,
-             "An object face stands on the table: a candidate with more than this share of the "
-             "dominant plane's points behind it is not background (unless it holds "
-             "large_view_fraction of the view).",
-             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD and the uncropped OSD frame"})
-      .param("large_view_fraction", 0.15,
-             "Horizontal candidates (within horizontal_max_deg of up) holding this share of the "
-             "valid pixels skip the max_support_behind_fraction test (a table seen above a "
-             "dominant floor); a large vertical face standing on the table stays an object.",
-             {.min = 0.0, .max = 1.0, .origin = "measured: mOSD box faces hold at most 0.13"})
-      .param("sample_stride_px", 4,
-             "The support test looks at every n-th row and column (the assignment to planes "
-             "is always per pixel).",
-             {.unit = "px",
-              .min = 1.0,
-              .max = 16.0,
-              .origin = "measured: the same decisions at 1, 2 and 4 on mOSD and the uncropped "
-                        "OSD frame; 4 reads 1/16 of the points"})
-      .param("min_object_height_m", 0.006,
-             "Scene model: horizontal candidates whose centroids lie within this height of one "
-             "another's plane are one level (the fragments of one table top); a level or a patch "
-             "raised above the table by more is the top of an object lying on it. The smallest "
-             "thickness of a flat object that is found (with Kinect noise at 1 m: about 1 cm).",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 0.1,
-              .origin = "measured: plateau of generated scenes with books 1-4 cm thick "
-                        "(docs/evaluation.md)"})
-      .param("max_object_height_m", 0.3,
-             "Scene model: a horizontal level raised above the table by up to this much is an "
-             "object top; farther above, and holding large_view_fraction of the view, it is a "
-             "table above the floor. A level this much or less below the largest one, holding "
-             "min_table_fraction, is the table that level stands on.",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 10.0,
-              .origin = "tables stand 0.4 m and more above the floor; objects for a gripper are "
-                        "lower"})
-      .param("min_table_fraction", 0.05,
-             "Scene model: the least share of the valid pixels that a level below the largest "
-             "one needs to be taken for the table (the largest level is then a board lying on "
-             "it).",
-             {.min = 0.0, .max = 1.0, .origin = "measured on generated crowded tables"})
-      .param("horizontal_max_deg", 10.0,
-             "alpha_z: a plane is horizontal when its normal is within this angle of world up.",
-             {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "paper (10 deg)"})
-      .param("up", "auto",
-             "World up in the camera frame: 'auto' takes the normal of the largest candidate "
-             "within up_prior_max_deg of the camera's up (-y); or a vector 'x,y,z' (camera "
-             "frame: x right, y down, z forward), e.g. '0,-1,0' for a level camera.",
-             {.origin = "ALGORITHM.md: from a parameter or the dominant horizontal plane"})
-      .param("up_prior_max_deg", 80.0,
-             "auto up: the dominant horizontal plane is the largest candidate whose normal is "
-             "within this angle of the camera's -y axis (a camera looking down at a table at "
-             "up to this pitch). A wall facing a camera pitched down lies more than 90 deg from "
-             "it. With a given up, horizontal_max_deg is used instead.",
-             {.unit = "deg",
-              .min = 0.0,
-              .max = 90.0,
-              .origin = "mOSD tables 25-50 deg; generated views pitched down 30-70 deg (60 lost "
-                        "the table of every view pitched more steeply, docs/evaluation.md)"})
-      .param("min_segment_px", 20,
-             "N_seg: patches left with fewer points than this are dropped (set to 0).",
-             {.unit = "px", .min = 0.0, .max = 1.0e6, .origin = "paper: N_seg = 5 at 320x240, x4"})
-      .param("split_max_distance_m", 0.01,
-             "Gate of the split of what a plane leaves of a patch: two of its pixels are one "
-             "piece when they are 8-neighbours closer than this in 3D (growing with the square "
-             "of the depth beyond split_growth_start_m).",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 1.0,
-              .origin = "grow.blobs' Delta_blob (the same neighbour linkage)"})
-      .param(
-          "split_growth_start_m", 1.2,
-          "Beyond this depth split_max_distance_m grows with the square of the depth; 0 "
-          "keeps it fixed.",
-          {.unit = "m", .min = 0.0, .max = 100.0, .origin = "grow.blobs' distance_growth_start_m"})
-      .param("planes_per_patch", 2,
-             "Planes fitted to one candidate patch: what a fit leaves more than 2 distance_m "
-             "off its plane, when that is at least candidate_min_px, is fitted again (a fit "
-             "within horizontal_max_deg and 2 distance_m of the one before is the same plane "
-             "and ends the search). Where no normal edge parts them, one patch spans a far table "
-             "and the wall behind it; one plane per patch then finds only the wall, and the "
-             "frame loses its table. 1 = the paper's one plane per patch.",
-             {.min = 1.0,
-              .max = 4.0,
-              .origin = "2: generated checking set with PCA normals 0.835 -> 0.890 (seed 1008's "
-                        "view lost its table); the default graph's figures unchanged within "
-                        "0.001 (docs/planes.md)"})
-      .param("seed", 1, "Seed of the RANSAC random numbers, reset every frame.",
-             {.min = 0.0, .max = 4294967295.0, .origin = "any; fixed for reproducible results"})
+  StageSpec spec(
+      "planes.support",
+      "Support and background planes (table, floor, walls) from large surface patches.\n"
+      "Paper sec. II-B d. Every patch of at least candidate_min_px valid points is a "
+      "candidate (largest first, at most max_candidates): a plane is fitted to it by "
+      "ransac_iterations random point triples of the patch, scored at distance_m / 2, "
+      "then refitted by least squares. The scene model (docs/planes.md) first picks the "
+      "table: horizontal candidates are grouped into levels (centroids within "
+      "min_object_height_m of one plane); the largest level is the table, unless a level "
+      "far above it (max_object_height_m) holds large_view_fraction of the view (a table "
+      "above the floor) or a level a little below it holds min_table_fraction (the "
+      "largest level is then a board or box lying on that table). Levels raised above "
+      "the table by up to max_object_height_m are object tops (books, trays, boxes lying "
+      "flat) and never support planes. Any other candidate becomes a background plane "
+      "when it covers at least min_view_fraction of the valid pixels and at most "
+      "max_behind_fraction of the object candidates (points on no support plane) lie "
+      "more than behind_margin_m behind it; this is re-evaluated until nothing changes, "
+      "so a table is accepted once the floor and walls behind it are. Box faces fail: "
+      "the rest of their box lies behind them. Then, largest first, every valid point "
+      "not yet taken within distance_m of a support plane joins it, also out of its "
+      "patch, except the points of object faces. What a plane leaves of a patch is split "
+      "into its connected pieces (8-neighbours closer than split_max_distance_m), each a "
+      "patch of its own: a table patch that ran onto the tops of objects leaves one "
+      "piece per top, not one patch spanning them. Patches left with fewer than "
+      "min_segment_px points are dropped. The table's visible extent (a convex outline) "
+      "goes with the planes, for grow.blobs.");
+  return spec
+      .declare(kPatchesIn, kPoints, kPlanes, kPlaneLabels, kPatchesOut, kAdjacency, kDistance,
+               kRansacIterations, kCandidateMinSize, kMaxCandidates, kFitMaxPoints,
+               kObjectFaceOffPlaneFraction, kMinViewFraction, kMaxBehindFraction, kBehindMargin,
+               kMinObjectFraction, kMaxSupportBehindFraction, kLargeViewFraction, kSampleStride,
+               kMinObjectHeight, kMaxObjectHeight, kMinTableFraction, kHorizontalMaxAngle, kUp,
+               kUpPriorMaxAngle, kMinSegmentSize, kSplitMaxDistance, kSplitGrowthStart,
+               kPlanesPerPatch, kSeed)
       .concurrency(Concurrency::clonable);
 }
 
 SupportPlaneStage::SupportPlaneStage(const Params& params)
-    : horizontal_max_deg_(params.get_double("horizontal_max_deg")),
-      up_prior_max_deg_(params.get_double("up_prior_max_deg")),
-      min_segment_px_(params.get_int("min_segment_px")),
-      split_gate_(static_cast<float>(params.get_double("split_max_distance_m")),
-                  static_cast<float>(params.get_double("split_growth_start_m"))),
-      seed_(static_cast<std::uint32_t>(params.get_int("seed"))) {
-  const auto distance_m = static_cast<float>(params.get_double("distance_m"));
-  fit_rule_.iterations = static_cast<int>(params.get_int("ransac_iterations"));
+    : horizontal_max_deg_(kHorizontalMaxAngle(params)),
+      up_prior_max_deg_(kUpPriorMaxAngle(params)),
+      up_(kUp(params).direction),
+      min_segment_px_(kMinSegmentSize(params)),
+      split_gate_(static_cast<float>(kSplitMaxDistance(params)),
+                  static_cast<float>(kSplitGrowthStart(params))),
+      seed_(static_cast<std::uint32_t>(kSeed(params))) {
+  const auto distance_m = static_cast<float>(kDistance(params));
+  fit_rule_.iterations = kRansacIterations(params);
   fit_rule_.inlier_distance_m = distance_m / 2.0F;
   support_rule_.inlier_distance_m = distance_m;
-  support_rule_.behind_margin_m = static_cast<float>(params.get_double("behind_margin_m"));
-  support_rule_.min_view_fraction = params.get_double("min_view_fraction");
-  support_rule_.max_behind_fraction = params.get_double("max_behind_fraction");
-  support_rule_.min_object_fraction = params.get_double("min_object_fraction");
-  support_rule_.max_support_behind_fraction = params.get_double("max_support_behind_fraction");
-  support_rule_.large_view_fraction = params.get_double("large_view_fraction");
+  support_rule_.behind_margin_m = static_cast<float>(kBehindMargin(params));
+  support_rule_.min_view_fraction = kMinViewFraction(params);
+  support_rule_.max_behind_fraction = kMaxBehindFraction(params);
+  support_rule_.min_object_fraction = kMinObjectFraction(params);
+  support_rule_.max_support_behind_fraction = kMaxSupportBehindFraction(params);
+  support_rule_.large_view_fraction = kLargeViewFraction(params);
   support_rule_.min_cos_horizontal = std::cos(horizontal_max_deg_ * std::numbers::pi / 180.0);
-  support_rule_.sample_stride_px = static_cast<int>(params.get_int("sample_stride_px"));
+  support_rule_.sample_stride_px = kSampleStride(params);
   table_rule_.min_cos_horizontal = support_rule_.min_cos_horizontal;
-  table_rule_.level_tolerance_m = static_cast<float>(params.get_double("min_object_height_m"));
-  table_rule_.max_object_height_m = static_cast<float>(params.get_double("max_object_height_m"));
-  table_rule_.min_table_fraction = params.get_double("min_table_fraction");
+  table_rule_.level_tolerance_m = static_cast<float>(kMinObjectHeight(params));
+  table_rule_.max_object_height_m = static_cast<float>(kMaxObjectHeight(params));
+  table_rule_.min_table_fraction = kMinTableFraction(params);
   table_rule_.large_view_fraction = support_rule_.large_view_fraction;
-  candidate_rule_.min_px = params.get_int("candidate_min_px");
-  candidate_rule_.max_candidates = static_cast<int>(params.get_int("max_candidates"));
-  candidate_rule_.max_fit_points = params.get_int("fit_max_points");
-  candidate_rule_.planes_per_patch = static_cast<int>(params.get_int("planes_per_patch"));
+  candidate_rule_.min_px = kCandidateMinSize(params);
+  candidate_rule_.max_candidates = kMaxCandidates(params);
+  candidate_rule_.max_fit_points = kFitMaxPoints(params);
+  candidate_rule_.planes_per_patch = kPlanesPerPatch(params);
   candidate_rule_.off_plane_m = 2.0F * distance_m;
   candidate_rule_.same_plane_cos = static_cast<float>(support_rule_.min_cos_horizontal);
   assignment_rule_.inlier_distance_m = distance_m;
-  assignment_rule_.object_face_off_plane_fraction =
-      params.get_double("object_face_off_plane_fraction");
-  assignment_rule_.min_object_height_m =
-      static_cast<float>(params.get_double("min_object_height_m"));
-  try {
-    up_ = parse_up(params.get_string("up"));
-  } catch (const std::invalid_argument& error) {
-    throw StageError(error.what());
-  }
+  assignment_rule_.object_face_off_plane_fraction = kObjectFaceOffPlaneFraction(params);
+  assignment_rule_.min_object_height_m = static_cast<float>(kMinObjectHeight(params));
 }
 
 void SupportPlaneStage::process(ProcessContext& ctx) {
-  const auto& patches = ctx.input<LabelImage>("patches");
-  const auto& points = ctx.input<PointImage>("points");
+  const LabelImage& patches = kPatchesIn(ctx);
+  const PointImage& points = kPoints(ctx);
   require_type(patches.labels, CV_32SC1, "patches");
   require_type(points.points, CV_32FC3, "points");
   require_same_size(patches.labels, "patches", points.points, "points");
@@ -420,12 +476,12 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
                                                           static_cast<double>(assignment.valid_px)
                                                     : 0.0);
   plane_labels.count = static_cast<std::int32_t>(planes.planes.size());
-  ctx.output("planes", std::move(planes));
-  ctx.output("plane_labels", std::move(plane_labels));
+  kPlanes(ctx, std::move(planes));
+  kPlaneLabels(ctx, std::move(plane_labels));
   PatchAdjacency adjacency = algo::find_patch_contacts(remaining.labels, remaining.count);
   static_cast<FrameHeader&>(adjacency) = patches;
-  ctx.output("patches", std::move(remaining));
-  ctx.output("adjacency", std::move(adjacency));
+  kPatchesOut(ctx, std::move(remaining));
+  kAdjacency(ctx, std::move(adjacency));
 }
 
 // A patch that gave points to a plane and kept some may have kept several pieces (the table's

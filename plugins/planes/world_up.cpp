@@ -2,25 +2,11 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
-#include <stdexcept>
+#include <span>
+
+#include "facet/param_text.hpp"
 
 namespace facet::planes {
-
-std::optional<Eigen::Vector3f> parse_up(const std::string& text) {
-  if (text == "auto") return std::nullopt;
-  std::istringstream in(text);
-  Eigen::Vector3f up;
-  char comma1 = 0;
-  char comma2 = 0;
-  in >> up.x() >> comma1 >> up.y() >> comma2 >> up.z();
-  if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() || !up.allFinite() ||
-      !(up.norm() > 0.0F)) {
-    throw std::invalid_argument("up must be 'auto' or a non-zero vector 'x,y,z', not '" + text +
-                                "'");
-  }
-  return up.normalized();
-}
 
 int dominant_horizontal(const std::vector<algo::Plane>& candidates,
                         const Eigen::Vector3f& reference, double max_angle_deg) {
@@ -32,3 +18,24 @@ int dominant_horizontal(const std::vector<algo::Plane>& candidates,
 }
 
 }  // namespace facet::planes
+
+std::variant<facet::planes::WorldUp, std::string> facet::ParamTraits<facet::planes::WorldUp>::parse(
+    std::string_view text) {
+  if (text == "auto") return planes::WorldUp{};
+  const auto refused = [&](const std::string& why) {
+    return "up must be 'auto' or a non-zero vector 'x,y,z', not '" + std::string(text) +
+           "': " + why;
+  };
+  auto parsed = parse_number_list(text, 3);
+  if (const auto* why = std::get_if<std::string>(&parsed)) return refused(*why);
+  const std::vector<float>& values = std::get<NumberList>(parsed).values;
+  const Eigen::Vector3f up(values[0], values[1], values[2]);
+  if (!(up.norm() > 0.0F)) return refused("a zero vector has no direction");
+  return planes::WorldUp{up.normalized()};
+}
+
+std::string facet::ParamTraits<facet::planes::WorldUp>::format(const planes::WorldUp& value) {
+  if (!value.direction) return "auto";
+  const Eigen::Vector3f& up = *value.direction;
+  return format_number_list(std::span<const float>(up.data(), 3));
+}

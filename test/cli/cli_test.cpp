@@ -262,13 +262,16 @@ TEST(Cli, ValidateChecksEveryVariant) {
 
 // Structured parameters (a workspace box) are parsed when a stage is constructed; validate
 // constructs every node once, in every variant, so a bad value is found before a run, at the node.
-TEST(Cli, ValidateFindsAStructuredParameterTheStageRefuses) {
+// A structured parameter (grow.blobs' workspace box) is parsed by validation itself, before any
+// stage is built, so a bad value is reported where it was written: the option, or file:line:col.
+TEST(Cli, ValidateParsesAStructuredParameterWhereItIsWritten) {
   const auto graph = source_dir() / "graphs/tabletop.yaml";
   const auto base = run_cli("validate --set blobs.workspace=1,2,3 " + shell_quote(graph.string()));
   EXPECT_EQ(base.exit_code, 3) << base.out;
-  EXPECT_NE(base.out.find("tabletop.yaml:"), std::string::npos) << base.out;
-  EXPECT_NE(base.out.find("node 'blobs' (grow.blobs): its parameters were refused"),
+  EXPECT_NE(base.out.find("--set blobs.workspace=1,2,3: parameter 'workspace' of node 'blobs'"),
             std::string::npos)
+      << base.out;
+  EXPECT_NE(base.out.find("6 comma-separated numbers are needed, not 3"), std::string::npos)
       << base.out;
   EXPECT_EQ(base.out.find("is valid"), std::string::npos) << base.out;
 
@@ -292,6 +295,21 @@ TEST(Cli, ValidateFindsAStructuredParameterTheStageRefuses) {
   EXPECT_NE(all.out.find("variant broken"), std::string::npos) << all.out;
   EXPECT_EQ(all.out.find("variant boxed"), std::string::npos) << all.out;
   EXPECT_EQ(run_cli("validate --variant boxed " + shell_quote(variants.string())).exit_code, 0);
+
+  const auto inline_box = dir.path() / "inline.yaml";
+  std::ofstream(inline_box) << "facet: 1\nname: inline\nnodes:\n"
+                               "  source: {stage: io.frames, params: {path: data}}\n"
+                               "  points: {stage: convert.points, in: {depth: source.depth}}\n"
+                               "  normals: {stage: normals.cross, in: {depth: source.depth}}\n"
+                               "  edges: {stage: edges.max, in: {normals: normals.normals}}\n"
+                               "  patches: {stage: grow.surfaces, "
+                               "in: {edges: edges.edges, points: points.points}}\n"
+                               "  blobs: {stage: grow.blobs, params: {workspace: '0,1,0,1,2,1'}, "
+                               "in: {patches: patches.patches, points: points.points}}\n";
+  const auto inline_run = run_cli("validate " + shell_quote(inline_box.string()));
+  EXPECT_EQ(inline_run.exit_code, 3) << inline_run.out;
+  EXPECT_NE(inline_run.out.find("inline.yaml:9:"), std::string::npos) << inline_run.out;
+  EXPECT_NE(inline_run.out.find("zmin 2 is not below zmax 1"), std::string::npos) << inline_run.out;
 }
 
 TEST(Cli, AMistypedChoiceGetsTheClosestChoice) {

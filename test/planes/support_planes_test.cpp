@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -110,7 +111,7 @@ TEST(GrowBlobs, BlobsLyingInAPlaneBandAreRemoved) {
 }
 
 // A workspace box around two of the three boxes keeps just those two; a malformed box is a
-// construction error that names the text.
+// parameter error that names the text.
 TEST(GrowBlobs, WorkspaceBoxKeepsTheObjectsInside) {
   const SceneRun run = run_scene(table_with_boxes());
   ASSERT_EQ(run.blobs.count, 3);
@@ -142,7 +143,7 @@ TEST(GrowBlobs, WorkspaceBoxKeepsTheObjectsInside) {
     try {
       run_blobs(run.planes.patches, run.points, &run.planes.planes, {{"workspace", bad}});
       ADD_FAILURE() << "accepted workspace '" << bad << "'";
-    } catch (const StageError& error) {
+    } catch (const std::invalid_argument& error) {
       EXPECT_NE(std::string(error.what()).find(bad), std::string::npos) << error.what();
     }
   }
@@ -172,7 +173,7 @@ TEST(SupportPlanes, GivenUpGivesTheSameTable) {
   ASSERT_EQ(result.planes.planes.size(), 1u);
   EXPECT_TRUE(result.planes.planes[0].horizontal);
   EXPECT_THROW(run_planes(face_patches(scene, points), points, {{"up", std::string("up")}}),
-               StageError);
+               std::invalid_argument);
 }
 
 TEST(SupportPlanes, RemovesFloorWallAndTableKeepsObjects) {

@@ -3,37 +3,13 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <sstream>
-#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "blobs/blob_support.hpp"
+#include "facet/param_text.hpp"
 
 namespace facet::blobs {
-
-std::optional<Eigen::AlignedBox3f> parse_workspace(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  std::istringstream in(text);
-  std::array<float, 6> bounds{};
-  bool ok = true;
-  for (std::size_t i = 0; i < bounds.size() && ok; ++i) {
-    char comma = ',';
-    if (i > 0) in >> comma;
-    in >> bounds[i];
-    ok = !in.fail() && comma == ',' && std::isfinite(bounds[i]);
-  }
-  ok = ok && (in >> std::ws).eof();
-  for (std::size_t axis = 0; axis < 3 && ok; ++axis)
-    ok = bounds[2 * axis] < bounds[2 * axis + 1];
-  if (!ok) {
-    throw std::invalid_argument(
-        "workspace must be empty or 'xmin,xmax,ymin,ymax,zmin,zmax' in metres with min < max, "
-        "not '" +
-        text + "'");
-  }
-  return Eigen::AlignedBox3f(Eigen::Vector3f(bounds[0], bounds[2], bounds[4]),
-                             Eigen::Vector3f(bounds[1], bounds[3], bounds[5]));
-}
 
 std::int32_t drop_blobs_outside(EuclideanRegions& blobs, const cv::Mat& xyz,
                                 const Eigen::AlignedBox3f& box) {
@@ -60,3 +36,35 @@ std::int32_t drop_blobs_outside(EuclideanRegions& blobs, const cv::Mat& xyz,
 }
 
 }  // namespace facet::blobs
+
+std::variant<facet::blobs::Workspace, std::string>
+facet::ParamTraits<facet::blobs::Workspace>::parse(std::string_view text) {
+  if (text.empty()) return blobs::Workspace{};
+  const auto refused = [&](const std::string& why) {
+    return "workspace must be empty or 'xmin,xmax,ymin,ymax,zmin,zmax' in metres with min < max, "
+           "not '" +
+           std::string(text) + "': " + why;
+  };
+  auto parsed = parse_number_list(text, 6);
+  if (const auto* why = std::get_if<std::string>(&parsed)) return refused(*why);
+  const NumberList& bounds = std::get<NumberList>(parsed);
+  constexpr std::array<char, 3> kAxes{'x', 'y', 'z'};
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (!(bounds.values[2 * axis] < bounds.values[2 * axis + 1])) {
+      return refused(std::string(1, kAxes[axis]) + "min " + std::string(bounds.fields[2 * axis]) +
+                     " is not below " + kAxes[axis] + "max " +
+                     std::string(bounds.fields[2 * axis + 1]));
+    }
+  }
+  const std::vector<float>& b = bounds.values;
+  return blobs::Workspace{
+      Eigen::AlignedBox3f(Eigen::Vector3f(b[0], b[2], b[4]), Eigen::Vector3f(b[1], b[3], b[5]))};
+}
+
+std::string facet::ParamTraits<facet::blobs::Workspace>::format(const blobs::Workspace& value) {
+  if (!value.box) return "";
+  const Eigen::AlignedBox3f& box = *value.box;
+  const std::array<float, 6> bounds{box.min().x(), box.max().x(), box.min().y(),
+                                    box.max().y(), box.min().z(), box.max().z()};
+  return format_number_list(bounds);
+}
