@@ -2,9 +2,45 @@
 
 #include <cmath>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::normals {
+
+namespace {
+
+const In<DepthImage> kDepth{"depth",
+                            "Depth image, CV_16UC1 in mm (0 = invalid) or CV_32FC1 in m (0 or NaN "
+                            "= invalid); metric space needs its intrinsics."};
+const Out<NormalImage> kNormals{"normals",
+                                "CV_32FC3 unit normals, same size and header as the input, "
+                                "oriented towards the camera, NaN = no normal. In image space the "
+                                "components are in (px, px, scaled depth) space."};
+const Param<int> kWindow{
+    "window",
+    5,
+    "Side length k of the square window (odd).",
+    {.unit = "px",
+     .min = 3.0,
+     .max = 31.0,
+     .origin = "paper Table I (3 and 5); 5 was the more stable of the two there"}};
+const Param<double> kMinValidFraction{
+    "min_valid_fraction",
+    0.5,
+    "Fraction of the window's k^2 points that must be valid (at least 3 points always).",
+    {.min = 0.0,
+     .max = 1.0,
+     .origin = "not in the paper (nor in the authors' code, which has no PCA): a majority, so a "
+               "hole's rim still gets normals from the measured side"}};
+
+PcaOptions pca_options_from(const Params& params) {
+  const int window = kWindow(params);
+  if (window % 2 == 0) throw StageError("window must be odd, got " + std::to_string(window));
+  const double fraction = kMinValidFraction(params);
+  return {window, static_cast<int>(std::ceil(fraction * window * window))};
+}
+
+}  // namespace
 
 StageSpec PcaStage::spec() {
   StageSpec spec(
@@ -15,52 +51,22 @@ StageSpec PcaStage::spec() {
       "(Table I: 3x3 and 5x5). Same spaces as normals.cross. A pixel gets no normal (NaN) when "
       "its own depth is invalid, its window leaves the image, or too few points of the window "
       "are valid; invalid points are left out, never filled in.");
-  spec.input<DepthImage>("depth",
-                         "Depth image, CV_16UC1 in mm (0 = invalid) or CV_32FC1 in m (0 or NaN = "
-                         "invalid); metric space needs its intrinsics.")
-      .output<NormalImage>("normals",
-                           "CV_32FC3 unit normals, same size and header as the input, oriented "
-                           "towards the camera, NaN = no normal. In image space the components "
-                           "are in (px, px, scaled depth) space.");
-  spec.declare(kDepthSpaceParams);
-  spec.param("window", 5, "Side length k of the square window (odd).",
-             {.unit = "px",
-              .min = 3.0,
-              .max = 31.0,
-              .origin = "paper Table I (3 and 5); 5 was the more stable of the two there"})
-      .param("min_valid_fraction", 0.5,
-             "Fraction of the window's k^2 points that must be valid (at least 3 points always).",
-             {.min = 0.0,
-              .max = 1.0,
-              .origin = "not in the paper (nor in the authors' code, which has no PCA): a "
-                        "majority, so a hole's rim still gets normals from the measured side"})
+  return spec.declare(kDepth, kNormals, kDepthSpaceParams, kWindow, kMinValidFraction)
       .concurrency(Concurrency::clonable);
-  return spec;
 }
-
-namespace {
-
-PcaOptions pca_options_from(const Params& params) {
-  const auto window = static_cast<int>(params.get_int("window"));
-  if (window % 2 == 0) throw StageError("window must be odd, got " + std::to_string(window));
-  const double fraction = params.get_double("min_valid_fraction");
-  return {window, static_cast<int>(std::ceil(fraction * window * window))};
-}
-
-}  // namespace
 
 PcaStage::PcaStage(const Params& params)
     : space_(kDepthSpaceParams(params)), pca_(pca_options_from(params)) {}
 
 void PcaStage::process(ProcessContext& ctx) {
-  const auto& input = ctx.input<DepthImage>("depth");
+  const DepthImage& input = kDepth(ctx);
   if (input.depth.empty()) throw StageError("input depth image is empty");
   depth_to_z(input.depth, space_, z_);
   make_pixel_grid(space_, input.camera, z_.cols, z_.rows, grid_);
   NormalImage output;
   static_cast<FrameHeader&>(output) = input;
   pca_.apply(z_, grid_, output.normals);
-  ctx.output("normals", std::move(output));
+  kNormals(ctx, std::move(output));
 }
 
 }  // namespace facet::normals

@@ -2,11 +2,65 @@
 
 #include <utility>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
 #include "partition/object_labels.hpp"
 
 namespace facet::partition {
+namespace {
+
+const In<LabelImage> kBlobs{"blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background."};
+const In<LabelImage> kPatches{"patches", "Surface patch ids, CV_32SC1; 0 = in no patch."};
+const OptionalIn<PatchAdjacency> kAdjacency{
+    "adjacency",
+    "Not used; accepted so that partition.bsp and partition.convex are "
+    "interchangeable in a graph."};
+const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."};
+const Out<LabelImage> kObjects{"objects", "Object ids 1..count, CV_32SC1; 0 = background."};
+const Param<double> kToleranceM{
+    "tolerance_m",
+    0.012,
+    "delta: points closer than this to a face's plane are on it.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "paper (delta = 12 mm)"}};
+const Param<int> kMinSplitPx{
+    "min_split_px",
+    80,
+    "N_split: a split needs this many points on each side (tolerates outliers of the "
+    "plane fit). A pixel count: it scales with the image area.",
+    {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "paper: 20 at 320x240, x4 for 640x480"}};
+const Param<int> kMinFacePx{
+    "min_face_px",
+    120,
+    "N_f: least points of a patch to serve as a face, and least face points of a blob "
+    "to be partitioned at all. A pixel count: it scales with the image area.",
+    {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "paper: 30 at 320x240, x4 for 640x480"}};
+const Param<double> kMinFaceRatio{
+    "min_face_ratio",
+    0.1,
+    "k_fe: a blob whose face points are fewer than this times its other points is one "
+    "object (mostly edges: the faces say little about it).",
+    {.min = 0.0, .max = 100.0, .origin = "paper (k_fe = 0.1)"}};
+const Param<bool> kKeepPatches{
+    "keep_patches",
+    true,
+    "Never cut a surface patch; it goes whole to the side holding most of its points. "
+    "Fixes the split-order weakness (paper Fig. 9 right).",
+    {.origin = "paper: announced fix"}};
+const EnumParam<PlaneOwner> kPlaneOwner{
+    "plane_owner",
+    PlaneOwner::behind,
+    {{PlaneOwner::boxes, "boxes"}, {PlaneOwner::behind, "behind"}},
+    "Which side the on-plane points join: 'boxes' = the paper's bounding-box rule (eq. 5); "
+    "'behind' = the side behind the face, where the body of a visible face lies (plane normals "
+    "point towards the camera).",
+    {.origin = "measured on the mOSD learn frames: F 0.954 (behind) vs 0.949 (boxes)"}};
+const Param<int> kMaxSplits{"max_splits",
+                            64,
+                            "Most splits per blob; a guard against pathological input.",
+                            {.min = 0.0, .max = 1.0e6}};
+
+}  // namespace
 
 StageSpec PartitionBsp::spec() {
   return StageSpec(
@@ -24,68 +78,26 @@ StageSpec PartitionBsp::spec() {
              "to the side holding most of its points. Blob pixels without a point take the "
              "object of the nearest pixel of their blob. Object ids follow the raster order of "
              "each object's first pixel.")
-      .input<LabelImage>("blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background.")
-      .input<LabelImage>("patches", "Surface patch ids, CV_32SC1; 0 = in no patch.")
-      .optional_input<PatchAdjacency>(
-          "adjacency",
-          "Not used; accepted so that partition.bsp and partition.convex are "
-          "interchangeable in a graph.")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .output<LabelImage>("objects", "Object ids 1..count, CV_32SC1; 0 = background.")
-      .param("tolerance_m", 0.012, "delta: points closer than this to a face's plane are on it.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "paper (delta = 12 mm)"})
-      .param("min_split_px", 80,
-             "N_split: a split needs this many points on each side (tolerates outliers of the "
-             "plane fit). A pixel count: it scales with the image area.",
-             {.unit = "px",
-              .min = 1.0,
-              .max = 1.0e7,
-              .origin = "paper: 20 at 320x240, x4 for 640x480"})
-      .param("min_face_px", 120,
-             "N_f: least points of a patch to serve as a face, and least face points of a blob "
-             "to be partitioned at all. A pixel count: it scales with the image area.",
-             {.unit = "px",
-              .min = 3.0,
-              .max = 1.0e7,
-              .origin = "paper: 30 at 320x240, x4 for 640x480"})
-      .param("min_face_ratio", 0.1,
-             "k_fe: a blob whose face points are fewer than this times its other points is one "
-             "object (mostly edges: the faces say little about it).",
-             {.min = 0.0, .max = 100.0, .origin = "paper (k_fe = 0.1)"})
-      .param("keep_patches", true,
-             "Never cut a surface patch; it goes whole to the side holding most of its points. "
-             "Fixes the split-order weakness (paper Fig. 9 right).",
-             {.origin = "paper: announced fix"})
-      .param("plane_owner", "behind",
-             "Which side the on-plane points join: 'boxes' = the paper's bounding-box rule "
-             "(eq. 5); 'behind' = the side behind the face, where the body of a visible face "
-             "lies (plane normals point towards the camera).",
-             {.choices = {std::string("boxes"), std::string("behind")},
-              .origin = "measured on the mOSD learn frames: F 0.954 (behind) vs 0.949 (boxes)"})
-      .param("max_splits", 64, "Most splits per blob; a guard against pathological input.",
-             {.min = 0.0, .max = 1.0e6})
+      .declare(kBlobs, kPatches, kAdjacency, kPoints, kObjects, kToleranceM, kMinSplitPx,
+               kMinFacePx, kMinFaceRatio, kKeepPatches, kPlaneOwner, kMaxSplits)
       .concurrency(Concurrency::clonable);
 }
 
 PartitionBsp::PartitionBsp(const Params& params)
-    : partitioner_(BspRule{
-          params.get_double("tolerance_m"),
-          static_cast<std::int32_t>(params.get_int("min_split_px")),
-          static_cast<std::int32_t>(params.get_int("min_face_px")),
-          params.get_double("min_face_ratio"), params.get_bool("keep_patches"),
-          static_cast<std::int32_t>(params.get_int("max_splits")),
-          params.get_string("plane_owner") == "behind" ? PlaneOwner::behind : PlaneOwner::boxes}) {}
+    : partitioner_(BspRule{kToleranceM(params), kMinSplitPx(params), kMinFacePx(params),
+                           kMinFaceRatio(params), kKeepPatches(params), kMaxSplits(params),
+                           kPlaneOwner(params)}) {}
 
 void PartitionBsp::process(ProcessContext& ctx) {
-  const auto& blobs = ctx.input<LabelImage>("blobs");
-  const auto& patches = ctx.input<LabelImage>("patches");
-  const auto& points = ctx.input<PointImage>("points");
+  const auto& blobs = kBlobs(ctx);
+  const auto& patches = kPatches(ctx);
+  const auto& points = kPoints(ctx);
   LabelImage objects;
   static_cast<FrameHeader&>(objects) = blobs;
   if (blobs.labels.empty()) {
     ctx.metric("objects", 0);
     ctx.metric("splits", 0);
-    ctx.output("objects", std::move(objects));
+    kObjects(ctx, std::move(objects));
     return;
   }
   check_partition_inputs(blobs.labels, patches.labels, points.points);
@@ -101,7 +113,7 @@ void PartitionBsp::process(ProcessContext& ctx) {
   objects.count = relabel_in_raster_order(objects.labels);
   ctx.metric("objects", objects.count);
   ctx.metric("splits", static_cast<double>(partitioner_.splits()));
-  ctx.output("objects", std::move(objects));
+  kObjects(ctx, std::move(objects));
 }
 
 }  // namespace facet::partition

@@ -2,11 +2,44 @@
 
 #include <utility>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
 #include "partition/object_labels.hpp"
 
 namespace facet::partition {
+namespace {
+
+const In<LabelImage> kBlobs{"blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background."};
+const In<LabelImage> kPatches{"patches", "Surface patch ids, CV_32SC1; 0 = in no patch."};
+const In<PatchAdjacency> kAdjacency{"adjacency", "Which patches touch (from grow.surfaces)."};
+const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."};
+const Out<LabelImage> kObjects{"objects", "Object ids 1..count, CV_32SC1; 0 = background."};
+const Param<double> kToleranceM{
+    "tolerance_m",
+    0.01,
+    "Points closer than this to the other patch's plane count as behind it (sensor "
+    "noise, and the rounded edge where two faces meet).",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<double> kMinBehindShare{
+    "min_behind_share",
+    0.9,
+    "Least share of each patch's points not in front of the other's plane for a "
+    "convex junction; below 1 so that outliers and curved patches still join.",
+    {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<double> kMinAngleDeg{
+    "min_angle_deg",
+    30.0,
+    "Patches whose normals differ by less meet at a step, never joined.",
+    {.unit = "deg", .min = 0.0, .max = 180.0, .origin = "authors' later code (30 deg)"}};
+const Param<int> kMinPatchPx{
+    "min_patch_px",
+    100,
+    "Smaller patches have no reliable plane; they join an object as leftover pixels. "
+    "A pixel count: it scales with the image area.",
+    {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"}};
+
+}  // namespace
 
 StageSpec PartitionConvex::spec() {
   return StageSpec(
@@ -22,45 +55,26 @@ StageSpec PartitionConvex::spec() {
              "point) join the object they are fewest pixel steps from within the blob; a blob "
              "with no patch is one object. Object ids follow the raster order of each object's "
              "first pixel.")
-      .input<LabelImage>("blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background.")
-      .input<LabelImage>("patches", "Surface patch ids, CV_32SC1; 0 = in no patch.")
-      .input<PatchAdjacency>("adjacency", "Which patches touch (from grow.surfaces).")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .output<LabelImage>("objects", "Object ids 1..count, CV_32SC1; 0 = background.")
-      .param("tolerance_m", 0.01,
-             "Points closer than this to the other patch's plane count as behind it (sensor "
-             "noise, and the rounded edge where two faces meet).",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("min_behind_share", 0.9,
-             "Least share of each patch's points not in front of the other's plane for a "
-             "convex junction; below 1 so that outliers and curved patches still join.",
-             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("min_angle_deg", 30.0,
-             "Patches whose normals differ by less meet at a step, never joined.",
-             {.unit = "deg", .min = 0.0, .max = 180.0, .origin = "authors' later code (30 deg)"})
-      .param("min_patch_px", 100,
-             "Smaller patches have no reliable plane; they join an object as leftover pixels. "
-             "A pixel count: it scales with the image area.",
-             {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"})
+      .declare(kBlobs, kPatches, kAdjacency, kPoints, kObjects, kToleranceM, kMinBehindShare,
+               kMinAngleDeg, kMinPatchPx)
       .concurrency(Concurrency::clonable);
 }
 
 PartitionConvex::PartitionConvex(const Params& params)
-    : merger_(ConvexRule{params.get_double("tolerance_m"), params.get_double("min_behind_share"),
-                         params.get_double("min_angle_deg"),
-                         static_cast<std::int32_t>(params.get_int("min_patch_px"))}) {}
+    : merger_(ConvexRule{kToleranceM(params), kMinBehindShare(params), kMinAngleDeg(params),
+                         kMinPatchPx(params)}) {}
 
 void PartitionConvex::process(ProcessContext& ctx) {
-  const auto& blobs = ctx.input<LabelImage>("blobs");
-  const auto& patches = ctx.input<LabelImage>("patches");
-  const auto& adjacency = ctx.input<PatchAdjacency>("adjacency");
-  const auto& points = ctx.input<PointImage>("points");
+  const auto& blobs = kBlobs(ctx);
+  const auto& patches = kPatches(ctx);
+  const auto& adjacency = kAdjacency(ctx);
+  const auto& points = kPoints(ctx);
   LabelImage objects;
   static_cast<FrameHeader&>(objects) = blobs;
   if (blobs.labels.empty()) {
     ctx.metric("objects", 0);
     ctx.metric("merges", 0);
-    ctx.output("objects", std::move(objects));
+    kObjects(ctx, std::move(objects));
     return;
   }
   check_partition_inputs(blobs.labels, patches.labels, points.points);
@@ -77,7 +91,7 @@ void PartitionConvex::process(ProcessContext& ctx) {
   objects.count = relabel_in_raster_order(objects.labels);
   ctx.metric("objects", objects.count);
   ctx.metric("merges", static_cast<double>(merger_.merges()));
-  ctx.output("objects", std::move(objects));
+  kObjects(ctx, std::move(objects));
 }
 
 }  // namespace facet::partition

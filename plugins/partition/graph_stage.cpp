@@ -2,12 +2,229 @@
 
 #include <utility>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
 #include "partition/object_labels.hpp"
 #include "partition/patch_graph.hpp"
 
 namespace facet::partition {
+namespace {
+
+const In<LabelImage> kBlobs{"blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background."};
+const In<LabelImage> kPatches{"patches", "Surface patch ids, CV_32SC1; 0 = in no patch."};
+const In<PatchAdjacency> kAdjacency{"adjacency", "Which patches touch (from grow.surfaces)."};
+const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."};
+const Out<LabelImage> kObjects{"objects", "Object ids 1..count, CV_32SC1; 0 = background."};
+const Out<PatchGraph> kGraph{"graph",
+                             "The graph for a person to look at (nodes, edges and the feature of "
+                             "each, object of each node), e.g. for io.patch_graph; only with "
+                             "emit_graph, else empty."};
+const Param<int> kMinPatchPx{
+    "min_patch_px",
+    100,
+    "Smaller patches have no reliable plane; they join an object as leftover pixels. "
+    "A pixel count: it scales with the image area.",
+    {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"}};
+const Param<double> kPlanarMaxRmsM{
+    "planar_max_rms_m",
+    0.003,
+    "A patch whose points are within this RMS distance of its plane is planar (the "
+    "coplanar feature), else curved (the curvature feature). About twice the depth "
+    "noise of a Kinect at 1 m after filter.median.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<bool> kConvex{"convex",
+                          true,
+                          "Join adjacent patches at convex junctions.",
+                          {.origin = "authors' later code (cutfree)"}};
+const Param<double> kConvexToleranceM{
+    "convex_tolerance_m",
+    0.01,
+    "Points closer than this to the other patch's plane count as behind it.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "partition.convex"}};
+const Param<double> kConvexMinBehindShare{
+    "convex_min_behind_share",
+    0.9,
+    "Least share of each patch's points not in front of the other's plane.",
+    {.min = 0.0, .max = 1.0, .origin = "partition.convex"}};
+const Param<double> kConvexMinAngleDeg{
+    "convex_min_angle_deg",
+    30.0,
+    "Patches whose normals differ by less meet at a step, never a convex edge.",
+    {.unit = "deg", .min = 0.0, .max = 180.0, .origin = "authors' later code (30 deg)"}};
+const Param<bool> kCoplanar{
+    "coplanar",
+    true,
+    "Join two planar patches on one plane whose gap in the image an occluder hides.",
+    {.origin = "authors' later code (coplanarity)"}};
+const Param<double> kCoplanarMaxAngleDeg{
+    "coplanar_max_angle_deg",
+    15.0,
+    "Most angle between the two patches' normals.",
+    {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "measured on mOSD learn frames"}};
+const Param<double> kCoplanarMaxDistanceM{
+    "coplanar_max_distance_m",
+    0.015,
+    "Most distance of each patch's centre from the other's plane.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<double> kCoplanarMaxGapM{
+    "coplanar_max_gap_m",
+    0.25,
+    "Most distance between the patches' 3D bounding boxes: the widest occluder.",
+    {.unit = "m", .min = 0.0, .max = 100.0, .origin = "table-top objects"}};
+const Param<double> kCoplanarFrontMarginM{
+    "coplanar_front_margin_m",
+    0.01,
+    "A gap pixel occludes the plane when its point is more than this in front of it.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "grow.blobs' Delta_blob (10 mm)"}};
+const Param<double> kCoplanarMinFrontShare{
+    "coplanar_min_front_share",
+    0.8,
+    "Least share of the gap pixels with a point that occlude the plane.",
+    {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<int> kCoplanarMinGapPx{
+    "coplanar_min_gap_px",
+    3,
+    "Fewer gap pixels with a point are no evidence of an occluder: not joined.",
+    {.unit = "px", .min = 0.0, .max = 1.0e6}};
+const Param<int> kCoplanarLines{
+    "coplanar_lines",
+    3,
+    "Image lines sampled between two patches (through their mean pixels and beside).",
+    {.min = 1.0, .max = 64.0}};
+const Param<bool> kCoplanarAcrossBlobsOnly{
+    "coplanar_across_blobs_only",
+    false,
+    "Only pairs of patches in different blobs. Off: two pieces of one blob are joined "
+    "too (a box's front seen on both sides of a box in front of it, its top above "
+    "joining the pieces into one blob); an occluder must be of another blob either "
+    "way.",
+    {.origin = "measured on mOSD learn frames: off 0.976, on 0.974 (whole objects)"}};
+const Param<double> kCoplanarTouchingMaxDistanceM{
+    "coplanar_touching_max_distance_m",
+    0.0,
+    "Two touching planar patches of one blob with normals within "
+    "coplanar_max_angle_deg and each centre at most this far from the other's plane "
+    "are taken for one surface broken by an edge line (noise, a printed label, a seam) "
+    "and joined. A step between two parallel faces (a magazine on a book) is higher. "
+    "Two boxes standing flush side by side look the same, so the stage leaves it off; "
+    "the shipped tabletop graphs set 0.005. "
+    "0 = never.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 0.1,
+     .origin = "measured: 0.005 gains 0.003 F on mOSD and 0.002 on generated scenes but "
+               "joins flush boxes (docs/evaluation.md)"}};
+const Param<int> kMaxPartners{
+    "max_partners",
+    4,
+    "The image lines (coplanar, and curvature beyond curvature_max_gap_m) and quadric "
+    "fits are made only for each patch's nearest candidates (by 3D gap), so that the "
+    "cost grows with the number of patches, not its square.",
+    {.min = 1.0, .max = 1.0e6}};
+const Param<bool> kCurvature{
+    "curvature",
+    true,
+    "Join two curved patches, close or with an occluder between, that one elliptic "
+    "quadric fits.",
+    {.origin = "own design, after the authors' curvature feature"}};
+const Param<double> kCurvatureToleranceM{
+    "curvature_tolerance_m",
+    0.005,
+    "A point within this (first-order distance) of the joint quadric fits it; covers "
+    "the wall of a cup or bowl between its inside and outside.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<double> kCurvatureMinShare{
+    "curvature_min_share",
+    0.8,
+    "Least share of each patch's points that fit.",
+    {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"}};
+const Param<double> kCurvatureMinAxisRatio{
+    "curvature_min_axis_ratio",
+    0.1,
+    "The quadric's weaker bending direction must be at least this share of the "
+    "stronger (elliptic, not two planes).",
+    {.min = 0.0, .max = 1.0}};
+const Param<int> kCurvatureSamples{"curvature_samples",
+                                   256,
+                                   "Points per patch used for the quadric fit.",
+                                   {.min = 10.0, .max = 1.0e6}};
+const Param<double> kCurvatureMaxGapM{
+    "curvature_max_gap_m",
+    0.02,
+    "Curved patches whose 3D boxes are this close are tested as they are (the inside "
+    "and outside of a bowl are often two blobs, split by the depth step at the rim).",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "about twice grow.blobs' 10 mm"}};
+const Param<double> kCurvatureMaxOccludedGapM{
+    "curvature_max_occluded_gap_m",
+    0.15,
+    "Curved patches further apart, up to this, are tested only when the coplanar "
+    "feature's occlusion test (its margin, share and lines, against the chord plane "
+    "of the two) says an occluder hides the gap: one can seen on both sides of a "
+    "bottle.",
+    {.unit = "m", .min = 0.0, .max = 1.0, .origin = "table-top objects"}};
+const Param<bool> kCut{"cut",
+                       true,
+                       "Cut weak bridges between densely joined groups.",
+                       {.origin = "authors' later code"}};
+const Param<double> kMaxCutCost{
+    "max_cut_cost",
+    0.5,
+    "A group is split while its minimum cut costs less; an edge (i, j) costs "
+    "1/2 (1/deg_i + 1/deg_j).",
+    {.min = 0.0, .max = 1.0e6, .origin = "authors' later code (0.5)"}};
+const Param<bool> kCutNeedsCycles{
+    "cut_needs_cycles",
+    true,
+    "Cut only between dense groups: each side must hold a cycle (e.g. the three "
+    "mutually convex faces of a box). The degree cost alone cuts every bridge of a "
+    "tree between nodes of two or more neighbours, e.g. a box's top joined to both "
+    "pieces of its occluded front.",
+    {.origin = "measured on mOSD learn frames (the one cut the plain rule made there "
+               "split an occluded box)"}};
+const Param<int> kMaxCutNodes{
+    "max_cut_nodes",
+    120,
+    "Groups of more nodes are not cut (the cut is cubic in the group's size).",
+    {.min = 4.0, .max = 1.0e5}};
+const Param<double> kUnclaimedCoreRadiusPx{
+    "unclaimed_core_radius_px",
+    8.0,
+    "Blob pixels that no node of the graph claimed and that lie at least this many "
+    "pixels from every claimed pixel and from the blob's border form cores; a core of "
+    "at least unclaimed_core_min_px pixels and unclaimed_core_radius_m wide becomes an "
+    "object of its own before the left-over pixels are shared out. An edge band between "
+    "two faces of one body is about 5 px wide on each side and has no core; a body "
+    "with no patch of its own (a box on a box, a cup on a tray, a can behind a box, far "
+    "from the camera) does. A core whose points lie mostly within convex_tolerance_m of "
+    "the plane of a planar patch beside it is the rest of that face and stays with it. "
+    "0 = off: every unclaimed pixel joins the nearest object of its blob.",
+    {.unit = "px",
+     .min = 0.0,
+     .max = 1000.0,
+     .origin = "swept 7-10 on generated sets (plateau); docs/partition.md"}};
+const Param<int> kUnclaimedCoreMinPx{
+    "unclaimed_core_min_px",
+    20,
+    "Smallest core (pixels) that becomes an object.",
+    {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "20-40 alike on generated sets"}};
+const Param<double> kUnclaimedCoreRadiusM{
+    "unclaimed_core_radius_m",
+    0.03,
+    "A core must also be this wide from its widest point to the region's border in 3D "
+    "(pixels x depth / fx): near the camera a face that holes kept from becoming a "
+    "patch is wide in pixels but narrow in metres, and stays with its body.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "0.02-0.03 alike on generated sets; 0 splits a hole-riddled side face "
+               "off mOSD learn27"}};
+const Param<bool> kEmitGraph{
+    "emit_graph", false,
+    "Fill the graph output. The runtime does not tell a stage whether an output is "
+    "connected, so the graph is only built when asked for."};
+
+}  // namespace
 
 StageSpec PartitionGraph::spec() {
   return StageSpec(
@@ -38,194 +255,42 @@ StageSpec PartitionGraph::spec() {
              "pixels of a blob (in no node, no point) "
              "join the object they are fewest pixel steps from within the blob. Object ids "
              "follow the raster order of each object's first pixel.")
-      .input<LabelImage>("blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background.")
-      .input<LabelImage>("patches", "Surface patch ids, CV_32SC1; 0 = in no patch.")
-      .input<PatchAdjacency>("adjacency", "Which patches touch (from grow.surfaces).")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .output<LabelImage>("objects", "Object ids 1..count, CV_32SC1; 0 = background.")
-      .output<PatchGraph>("graph",
-                          "The graph for a person to look at (nodes, edges and the feature of "
-                          "each, object of each node), e.g. for io.patch_graph; only with "
-                          "emit_graph, else empty.")
-      .param("min_patch_px", 100,
-             "Smaller patches have no reliable plane; they join an object as leftover pixels. "
-             "A pixel count: it scales with the image area.",
-             {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"})
-      .param("planar_max_rms_m", 0.003,
-             "A patch whose points are within this RMS distance of its plane is planar (the "
-             "coplanar feature), else curved (the curvature feature). About twice the depth "
-             "noise of a Kinect at 1 m after filter.median.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("convex", true, "Join adjacent patches at convex junctions.",
-             {.origin = "authors' later code (cutfree)"})
-      .param("convex_tolerance_m", 0.01,
-             "Points closer than this to the other patch's plane count as behind it.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "partition.convex"})
-      .param("convex_min_behind_share", 0.9,
-             "Least share of each patch's points not in front of the other's plane.",
-             {.min = 0.0, .max = 1.0, .origin = "partition.convex"})
-      .param("convex_min_angle_deg", 30.0,
-             "Patches whose normals differ by less meet at a step, never a convex edge.",
-             {.unit = "deg", .min = 0.0, .max = 180.0, .origin = "authors' later code (30 deg)"})
-      .param("coplanar", true,
-             "Join two planar patches on one plane whose gap in the image an occluder hides.",
-             {.origin = "authors' later code (coplanarity)"})
-      .param("coplanar_max_angle_deg", 15.0, "Most angle between the two patches' normals.",
-             {.unit = "deg", .min = 0.0, .max = 90.0, .origin = "measured on mOSD learn frames"})
-      .param("coplanar_max_distance_m", 0.015,
-             "Most distance of each patch's centre from the other's plane.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("coplanar_max_gap_m", 0.25,
-             "Most distance between the patches' 3D bounding boxes: the widest occluder.",
-             {.unit = "m", .min = 0.0, .max = 100.0, .origin = "table-top objects"})
-      .param("coplanar_front_margin_m", 0.01,
-             "A gap pixel occludes the plane when its point is more than this in front of it.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "grow.blobs' Delta_blob (10 mm)"})
-      .param("coplanar_min_front_share", 0.8,
-             "Least share of the gap pixels with a point that occlude the plane.",
-             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("coplanar_min_gap_px", 3,
-             "Fewer gap pixels with a point are no evidence of an occluder: not joined.",
-             {.unit = "px", .min = 0.0, .max = 1.0e6})
-      .param("coplanar_lines", 3,
-             "Image lines sampled between two patches (through their mean pixels and beside).",
-             {.min = 1.0, .max = 64.0})
-      .param("coplanar_across_blobs_only", false,
-             "Only pairs of patches in different blobs. Off: two pieces of one blob are joined "
-             "too (a box's front seen on both sides of a box in front of it, its top above "
-             "joining the pieces into one blob); an occluder must be of another blob either "
-             "way.",
-             {.origin = "measured on mOSD learn frames: off 0.976, on 0.974 (whole objects)"})
-      .param("coplanar_touching_max_distance_m", 0.0,
-             "Two touching planar patches of one blob with normals within "
-             "coplanar_max_angle_deg and each centre at most this far from the other's plane "
-             "are taken for one surface broken by an edge line (noise, a printed label, a seam) "
-             "and joined. A step between two parallel faces (a magazine on a book) is higher. "
-             "Two boxes standing flush side by side look the same, so the stage leaves it off; "
-             "the shipped tabletop graphs set 0.005. "
-             "0 = never.",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 0.1,
-              .origin = "measured: 0.005 gains 0.003 F on mOSD and 0.002 on generated scenes but "
-                        "joins flush boxes (docs/evaluation.md)"})
-      .param("max_partners", 4,
-             "The image lines (coplanar, and curvature beyond curvature_max_gap_m) and quadric "
-             "fits are made only for each patch's nearest candidates (by 3D gap), so that the "
-             "cost grows with the number of patches, not its square.",
-             {.min = 1.0, .max = 1.0e6})
-      .param("curvature", true,
-             "Join two curved patches, close or with an occluder between, that one elliptic "
-             "quadric fits.",
-             {.origin = "own design, after the authors' curvature feature"})
-      .param("curvature_tolerance_m", 0.005,
-             "A point within this (first-order distance) of the joint quadric fits it; covers "
-             "the wall of a cup or bowl between its inside and outside.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("curvature_min_share", 0.8, "Least share of each patch's points that fit.",
-             {.min = 0.0, .max = 1.0, .origin = "measured on mOSD learn frames"})
-      .param("curvature_min_axis_ratio", 0.1,
-             "The quadric's weaker bending direction must be at least this share of the "
-             "stronger (elliptic, not two planes).",
-             {.min = 0.0, .max = 1.0})
-      .param("curvature_samples", 256, "Points per patch used for the quadric fit.",
-             {.min = 10.0, .max = 1.0e6})
-      .param("curvature_max_gap_m", 0.02,
-             "Curved patches whose 3D boxes are this close are tested as they are (the inside "
-             "and outside of a bowl are often two blobs, split by the depth step at the rim).",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "about twice grow.blobs' 10 mm"})
-      .param("curvature_max_occluded_gap_m", 0.15,
-             "Curved patches further apart, up to this, are tested only when the coplanar "
-             "feature's occlusion test (its margin, share and lines, against the chord plane "
-             "of the two) says an occluder hides the gap: one can seen on both sides of a "
-             "bottle.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "table-top objects"})
-      .param("cut", true, "Cut weak bridges between densely joined groups.",
-             {.origin = "authors' later code"})
-      .param("max_cut_cost", 0.5,
-             "A group is split while its minimum cut costs less; an edge (i, j) costs "
-             "1/2 (1/deg_i + 1/deg_j).",
-             {.min = 0.0, .max = 1.0e6, .origin = "authors' later code (0.5)"})
-      .param("cut_needs_cycles", true,
-             "Cut only between dense groups: each side must hold a cycle (e.g. the three "
-             "mutually convex faces of a box). The degree cost alone cuts every bridge of a "
-             "tree between nodes of two or more neighbours, e.g. a box's top joined to both "
-             "pieces of its occluded front.",
-             {.origin = "measured on mOSD learn frames (the one cut the plain rule made there "
-                        "split an occluded box)"})
-      .param("max_cut_nodes", 120,
-             "Groups of more nodes are not cut (the cut is cubic in the group's size).",
-             {.min = 4.0, .max = 1.0e5})
-      .param("unclaimed_core_radius_px", 8.0,
-             "Blob pixels that no node of the graph claimed and that lie at least this many "
-             "pixels from every claimed pixel and from the blob's border form cores; a core of "
-             "at least unclaimed_core_min_px pixels and unclaimed_core_radius_m wide becomes an "
-             "object of its own before the left-over pixels are shared out. An edge band between "
-             "two faces of one body is about 5 px wide on each side and has no core; a body "
-             "with no patch of its own (a box on a box, a cup on a tray, a can behind a box, far "
-             "from the camera) does. A core whose points lie mostly within convex_tolerance_m of "
-             "the plane of a planar patch beside it is the rest of that face and stays with it. "
-             "0 = off: every unclaimed pixel joins the nearest object of its blob.",
-             {.unit = "px",
-              .min = 0.0,
-              .max = 1000.0,
-              .origin = "swept 7-10 on generated sets (plateau); docs/partition.md"})
-      .param("unclaimed_core_min_px", 20, "Smallest core (pixels) that becomes an object.",
-             {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "20-40 alike on generated sets"})
-      .param("unclaimed_core_radius_m", 0.03,
-             "A core must also be this wide from its widest point to the region's border in 3D "
-             "(pixels x depth / fx): near the camera a face that holes kept from becoming a "
-             "patch is wide in pixels but narrow in metres, and stays with its body.",
-             {.unit = "m",
-              .min = 0.0,
-              .max = 1.0,
-              .origin = "0.02-0.03 alike on generated sets; 0 splits a hole-riddled side face "
-                        "off mOSD learn27"})
-      .param("emit_graph", false,
-             "Fill the graph output. The runtime does not tell a stage whether an output is "
-             "connected, so the graph is only built when asked for.")
+      .declare(kBlobs, kPatches, kAdjacency, kPoints, kObjects, kGraph, kMinPatchPx, kPlanarMaxRmsM,
+               kConvex, kConvexToleranceM, kConvexMinBehindShare, kConvexMinAngleDeg, kCoplanar,
+               kCoplanarMaxAngleDeg, kCoplanarMaxDistanceM, kCoplanarMaxGapM, kCoplanarFrontMarginM,
+               kCoplanarMinFrontShare, kCoplanarMinGapPx, kCoplanarLines, kCoplanarAcrossBlobsOnly,
+               kCoplanarTouchingMaxDistanceM, kMaxPartners, kCurvature, kCurvatureToleranceM,
+               kCurvatureMinShare, kCurvatureMinAxisRatio, kCurvatureSamples, kCurvatureMaxGapM,
+               kCurvatureMaxOccludedGapM, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
+               kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM, kEmitGraph)
       .concurrency(Concurrency::clonable);
 }
 
-PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(params.get_bool("emit_graph")) {
-  core_rule_ = {params.get_double("unclaimed_core_radius_px"),
-                params.get_double("unclaimed_core_radius_m"),
-                static_cast<std::int32_t>(params.get_int("unclaimed_core_min_px")),
-                params.get_double("convex_tolerance_m")};
-  rule_.nodes = {static_cast<std::int32_t>(params.get_int("min_patch_px")),
-                 params.get_double("planar_max_rms_m")};
-  rule_.convex = params.get_bool("convex");
-  rule_.convex_rule = {params.get_double("convex_tolerance_m"),
-                       params.get_double("convex_min_behind_share"),
-                       params.get_double("convex_min_angle_deg"), rule_.nodes.min_patch_px};
-  rule_.coplanar = params.get_bool("coplanar");
-  rule_.coplanar_rule = {params.get_double("coplanar_max_angle_deg"),
-                         params.get_double("coplanar_max_distance_m"),
-                         params.get_double("coplanar_max_gap_m"),
-                         params.get_double("coplanar_front_margin_m"),
-                         params.get_double("coplanar_min_front_share"),
-                         static_cast<std::int32_t>(params.get_int("coplanar_min_gap_px")),
-                         static_cast<std::int32_t>(params.get_int("coplanar_lines")),
-                         static_cast<std::int32_t>(params.get_int("max_partners")),
-                         params.get_bool("coplanar_across_blobs_only"),
-                         params.get_double("coplanar_touching_max_distance_m")};
-  rule_.curvature = params.get_bool("curvature");
-  rule_.curvature_rule = {params.get_double("curvature_tolerance_m"),
-                          params.get_double("curvature_min_share"),
-                          params.get_double("curvature_min_axis_ratio"),
-                          static_cast<std::int32_t>(params.get_int("curvature_samples")),
-                          params.get_double("curvature_max_gap_m"),
-                          params.get_double("curvature_max_occluded_gap_m")};
-  rule_.cut = {params.get_bool("cut"), params.get_double("max_cut_cost"),
-               static_cast<std::int32_t>(params.get_int("max_cut_nodes")),
-               params.get_bool("cut_needs_cycles")};
+PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(kEmitGraph(params)) {
+  core_rule_ = {kUnclaimedCoreRadiusPx(params), kUnclaimedCoreRadiusM(params),
+                kUnclaimedCoreMinPx(params), kConvexToleranceM(params)};
+  rule_.nodes = {kMinPatchPx(params), kPlanarMaxRmsM(params)};
+  rule_.convex = kConvex(params);
+  rule_.convex_rule = {kConvexToleranceM(params), kConvexMinBehindShare(params),
+                       kConvexMinAngleDeg(params), rule_.nodes.min_patch_px};
+  rule_.coplanar = kCoplanar(params);
+  rule_.coplanar_rule = {kCoplanarMaxAngleDeg(params),     kCoplanarMaxDistanceM(params),
+                         kCoplanarMaxGapM(params),         kCoplanarFrontMarginM(params),
+                         kCoplanarMinFrontShare(params),   kCoplanarMinGapPx(params),
+                         kCoplanarLines(params),           kMaxPartners(params),
+                         kCoplanarAcrossBlobsOnly(params), kCoplanarTouchingMaxDistanceM(params)};
+  rule_.curvature = kCurvature(params);
+  rule_.curvature_rule = {kCurvatureToleranceM(params),   kCurvatureMinShare(params),
+                          kCurvatureMinAxisRatio(params), kCurvatureSamples(params),
+                          kCurvatureMaxGapM(params),      kCurvatureMaxOccludedGapM(params)};
+  rule_.cut = {kCut(params), kMaxCutCost(params), kMaxCutNodes(params), kCutNeedsCycles(params)};
 }
 
 void PartitionGraph::process(ProcessContext& ctx) {
-  const auto& blobs = ctx.input<LabelImage>("blobs");
-  const auto& patches = ctx.input<LabelImage>("patches");
-  const auto& adjacency = ctx.input<PatchAdjacency>("adjacency");
-  const auto& points = ctx.input<PointImage>("points");
+  const auto& blobs = kBlobs(ctx);
+  const auto& patches = kPatches(ctx);
+  const auto& adjacency = kAdjacency(ctx);
+  const auto& points = kPoints(ctx);
   LabelImage objects;
   static_cast<FrameHeader&>(objects) = blobs;
   auto report = [&](std::int64_t convex, std::int64_t coplanar, std::int64_t curvature) {
@@ -239,7 +304,7 @@ void PartitionGraph::process(ProcessContext& ctx) {
   graph_.nodes.clear();
   if (blobs.labels.empty()) {
     report(0, 0, 0);
-    ctx.output("objects", std::move(objects));
+    kObjects(ctx, std::move(objects));
     return;
   }
   check_partition_inputs(blobs.labels, patches.labels, points.points);
@@ -307,9 +372,9 @@ void PartitionGraph::process(ProcessContext& ctx) {
   report(static_cast<std::int64_t>(convex_count), static_cast<std::int64_t>(coplanar_count),
          static_cast<std::int64_t>(curvature_count));
   if (emit_graph_) {
-    ctx.output("graph", make_patch_graph(objects, graph_, edges_, group));
+    kGraph(ctx, make_patch_graph(objects, graph_, edges_, group));
   }
-  ctx.output("objects", std::move(objects));
+  kObjects(ctx, std::move(objects));
 }
 
 }  // namespace facet::partition

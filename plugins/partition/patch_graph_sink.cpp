@@ -4,9 +4,17 @@
 #include <string>
 #include <system_error>
 
+#include "facet/contract.hpp"
 #include "partition/patch_graph.hpp"
 
 namespace facet::partition {
+namespace {
+
+const In<PatchGraph> kGraph{"graph", "partition.graph's graph output."};
+const Param<std::string> kDir{
+    "dir", "out/graph", "Output folder, created if missing.", {.required = true}};
+
+}  // namespace
 
 StageSpec PatchGraphSink::spec() {
   return StageSpec("io.patch_graph",
@@ -16,12 +24,11 @@ StageSpec PatchGraphSink::spec() {
                    "and the edges (node indices, the feature that made the edge, whether the cut "
                    "kept it). For a person to look at; partition.graph fills its graph output "
                    "only with emit_graph: true.")
-      .input<PatchGraph>("graph", "partition.graph's graph output.")
-      .param("dir", "out/graph", "Output folder, created if missing.", {.required = true})
+      .declare(kGraph, kDir)
       .concurrency(Concurrency::serial);
 }
 
-PatchGraphSink::PatchGraphSink(const Params& params) : dir_(params.get_string("dir")) {}
+PatchGraphSink::PatchGraphSink(const Params& params) : dir_(kDir(params)) {}
 
 void PatchGraphSink::open(const OpenContext& /*ctx*/) {
   std::error_code error;
@@ -30,8 +37,8 @@ void PatchGraphSink::open(const OpenContext& /*ctx*/) {
 }
 
 void PatchGraphSink::process(ProcessContext& ctx) {
-  if (!ctx.has_input("graph")) return;
-  const auto& graph = ctx.input<PatchGraph>("graph");
+  if (kGraph.packet(ctx).empty()) return;
+  const auto& graph = kGraph(ctx);
   const std::string name =
       graph.frame.stem.empty() ? "frame_" + std::to_string(graph.frame.index) : graph.frame.stem;
   const std::filesystem::path file = dir_ / (name + ".json");

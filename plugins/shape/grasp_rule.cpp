@@ -9,18 +9,17 @@ GraspPrototype GraspRule::classify(const Eigen::Vector3d& full_extents_m) const 
   return GraspPrototype::power;
 }
 
-void GraspRule::declare(StageSpec& spec) {
-  spec.param("pincer_max_extent_m", 0.04,
-             "Grasp rule: an object whose largest full extent is below this gets a pincer grasp.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "small objects, about 4 cm"})
-      .param("precision_max_width_m", 0.08,
-             "Grasp rule: otherwise, an object whose smallest full extent is below this (it fits "
-             "between the finger tips) gets a precision grasp; anything larger a power grasp.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "finger-tip span, about 8 cm"});
-}
-
-GraspRule GraspRule::from(const Params& params) {
-  return {params.get_double("pincer_max_extent_m"), params.get_double("precision_max_width_m")};
-}
+const GraspRuleParams kGraspRuleParams{
+    Param<double>{
+        "pincer_max_extent_m",
+        0.04,
+        "Grasp rule: an object whose largest full extent is below this gets a pincer grasp.",
+        {.unit = "m", .min = 0.0, .max = 1.0, .origin = "small objects, about 4 cm"}},
+    Param<double>{
+        "precision_max_width_m",
+        0.08,
+        "Grasp rule: otherwise, an object whose smallest full extent is below this (it fits "
+        "between the finger tips) gets a precision grasp; anything larger a power grasp.",
+        {.unit = "m", .min = 0.0, .max = 1.0, .origin = "finger-tip span, about 8 cm"}}};
 
 }  // namespace facet::shape

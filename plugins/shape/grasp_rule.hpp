@@ -4,8 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "facet/param.hpp"
-#include "facet/stage_spec.hpp"
+#include "facet/contract.hpp"
 #include "facet/types/geometry.hpp"
 
 namespace facet::shape {
@@ -20,9 +19,21 @@ struct GraspRule {
   double precision_max_width_m = 0.08;
 
   GraspPrototype classify(const Eigen::Vector3d& full_extents_m) const;
-
-  static void declare(StageSpec& spec);
-  static GraspRule from(const Params& params);
 };
+
+// The rule's two thresholds as parameters of both shape stages: `spec.declare(kGraspRuleParams)`,
+// `kGraspRuleParams(params)`.
+struct GraspRuleParams {
+  Param<double> pincer_max_extent_m;
+  Param<double> precision_max_width_m;
+
+  void declare_in(StageSpec& spec) const {
+    spec.declare(pincer_max_extent_m, precision_max_width_m);
+  }
+  GraspRule operator()(const Params& params) const {
+    return {pincer_max_extent_m(params), precision_max_width_m(params)};
+  }
+};
+extern const GraspRuleParams kGraspRuleParams;
 
 }  // namespace facet::shape

@@ -6,25 +6,28 @@
 
 namespace facet::shape {
 
-void declare_object_ports(StageSpec& spec) {
-  spec.input<LabelImage>("objects", "Object ids 1..N, CV_32SC1; 0 = not an object.")
-      .input<PointImage>("points", "3D points, CV_32FC3 in metres, NaN = invalid; same size.")
-      .optional_input<SupportPlanes>(
-          "planes",
-          "Support planes. When given, each object records the plane its lowest points rest on.")
-      .output<ObjectList>("objects",
-                          "Per object: id, pixel count, centroid, axis-aligned bounds, PCA box, "
-                          "support plane (id and equation), shape model, grasp prototype (metres, "
-                          "camera frame).")
-      .param("support_tolerance_m", 0.02,
-             "An object rests on a plane when its lowest points (2nd percentile of the signed "
-             "distance) are within this of it and most of it lies above.",
-             {.unit = "m", .min = 0.0, .max = 1.0, .origin = "a few depth-noise widths at 1 m"})
-      .param("support_max_gap_m", 0.3,
-             "An object also stands on a horizontal plane when its lowest visible points are up "
-             "to this far above it (only its top is seen); the nearest plane below wins.",
-             {.unit = "m", .min = 0.0, .max = 10.0, .origin = "taller than graspable objects"});
-}
+const ObjectStageContract kObjectStage{
+    In<LabelImage>{"objects", "Object ids 1..N, CV_32SC1; 0 = not an object."},
+    In<PointImage>{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."},
+    OptionalIn<SupportPlanes>{
+        "planes",
+        "Support planes. When given, each object records the plane its lowest points rest on."},
+    Out<ObjectList>{"objects",
+                    "Per object: id, pixel count, centroid, axis-aligned bounds, PCA box, support "
+                    "plane (id and equation), shape model, grasp prototype (metres, camera "
+                    "frame)."},
+    Param<double>{
+        "support_tolerance_m",
+        0.02,
+        "An object rests on a plane when its lowest points (2nd percentile of the "
+        "signed distance) are within this of it and most of it lies above.",
+        {.unit = "m", .min = 0.0, .max = 1.0, .origin = "a few depth-noise widths at 1 m"}},
+    Param<double>{
+        "support_max_gap_m",
+        0.3,
+        "An object also stands on a horizontal plane when its lowest visible points are "
+        "up to this far above it (only its top is seen); the nearest plane below wins.",
+        {.unit = "m", .min = 0.0, .max = 10.0, .origin = "taller than graspable objects"}}};
 
 std::vector<ObjectGeometry> describe_objects(const LabelImage& objects, const PointImage& points,
                                              const SupportPlanes* planes,

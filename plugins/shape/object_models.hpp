@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "facet/stage_spec.hpp"
+#include "facet/contract.hpp"
 #include "facet/types/geometry.hpp"
 #include "facet/types/images.hpp"
 
@@ -17,9 +17,21 @@ struct ObjectGeometry {
   const Plane* support = nullptr;         // into the SupportPlanes input, or nullptr
 };
 
-// Declares the inputs (objects, points, planes), the output (objects), support_tolerance_m and
-// support_max_gap_m.
-void declare_object_ports(StageSpec& spec);
+// The ports both shape stages have (inputs objects, points and planes, output objects) and their
+// support parameters (support_tolerance_m, support_max_gap_m), declared in that order.
+struct ObjectStageContract {
+  In<LabelImage> objects;
+  In<PointImage> points;
+  OptionalIn<SupportPlanes> planes;
+  Out<ObjectList> models;
+  Param<double> support_tolerance_m;
+  Param<double> support_max_gap_m;
+
+  void declare_in(StageSpec& spec) const {
+    spec.declare(objects, points, planes, models, support_tolerance_m, support_max_gap_m);
+  }
+};
+extern const ObjectStageContract kObjectStage;
 
 // One entry per labelled object, in increasing id order. `planes` may be nullptr.
 std::vector<ObjectGeometry> describe_objects(const LabelImage& objects, const PointImage& points,

@@ -15,22 +15,18 @@ StageSpec PcaBoxStage::spec() {
                  "covers only what the camera saw, so it is too thin along the viewing ray; "
                  "shape.superquadric accounts for the unseen back. The grasp prototype uses the "
                  "box's full extents. Metrics: objects, mean_residual_m, fit_ms.");
-  declare_object_ports(spec);
-  GraspRule::declare(spec);
-  spec.concurrency(Concurrency::clonable);
-  return spec;
+  return spec.declare(kObjectStage, kGraspRuleParams).concurrency(Concurrency::clonable);
 }
 
 PcaBoxStage::PcaBoxStage(const Params& params)
-    : support_tolerance_m_(params.get_double("support_tolerance_m")),
-      support_max_gap_m_(params.get_double("support_max_gap_m")),
-      grasp_rule_(GraspRule::from(params)) {}
+    : support_tolerance_m_(kObjectStage.support_tolerance_m(params)),
+      support_max_gap_m_(kObjectStage.support_max_gap_m(params)),
+      grasp_rule_(kGraspRuleParams(params)) {}
 
 void PcaBoxStage::process(ProcessContext& ctx) {
-  const auto& labels = ctx.input<LabelImage>("objects");
-  const auto& points = ctx.input<PointImage>("points");
-  const SupportPlanes* planes =
-      ctx.has_input("planes") ? &ctx.input<SupportPlanes>("planes") : nullptr;
+  const LabelImage& labels = kObjectStage.objects(ctx);
+  const PointImage& points = kObjectStage.points(ctx);
+  const SupportPlanes* planes = kObjectStage.planes(ctx);
   const auto start = std::chrono::steady_clock::now();
 
   ObjectList list;
@@ -50,7 +46,7 @@ void PcaBoxStage::process(ProcessContext& ctx) {
   ctx.metric("objects", count);
   ctx.metric("mean_residual_m", count > 0 ? residual_sum_m / count : 0.0);
   ctx.metric("fit_ms", fit_ms);
-  ctx.output("objects", std::move(list));
+  kObjectStage.models(ctx, std::move(list));
 }
 
 }  // namespace facet::shape

@@ -8,6 +8,35 @@
 namespace facet::shape {
 namespace {
 
+const Param<int> kMaxPoints{
+    "max_points",
+    200,
+    "The fit uses a random subsample of this many of an object's points (all if fewer).",
+    {.min = 22.0, .max = 1.0e6, .origin = "measured: ~1 ms per object"}};
+const Param<int> kSeed{"seed",
+                       1,
+                       "Seed of the subsample; the same seed gives the same fit.",
+                       {.min = 0.0, .max = 2.0e9}};
+const Param<int> kMaxIterations{
+    "max_iterations", 25, "Levenberg-Marquardt iterations at most.", {.min = 1.0, .max = 1000.0}};
+const Param<double> kSupportWeight{
+    "support_weight",
+    1.0,
+    "Weight of the contact term (lowest point on the support plane), relative to all points "
+    "together; 0 disables it.",
+    {.min = 0.0, .max = 100.0}};
+const Param<double> kSizePriorWeight{
+    "size_prior_weight",
+    0.1,
+    "Pull of each log size towards the initial box, as if every point were off by weight x mean "
+    "size x change of log size: it keeps sizes the points do not constrain (the unseen back) "
+    "from drifting; 0 disables it.",
+    {.min = 0.0, .max = 10.0}};
+const Param<bool> kExtendWithoutPlane{
+    "extend_without_plane", true,
+    "Without a support plane, start from the PCA box made as deep (along the viewing ray) as its "
+    "smaller other extent, grown away from the camera."};
+
 // Each object gets its own subsample stream, so adding an object does not change the others.
 std::uint64_t object_seed(std::uint64_t seed, std::int32_t id) {
   return seed ^ (static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ULL);
@@ -57,29 +86,10 @@ StageSpec SuperquadricStage::spec() {
       "fits of the frame ended: fits_converged (the cost or the step fell below its "
       "tolerance), fits_at_iteration_limit (max_iterations reached first), fits_stalled (no "
       "step lowered the cost any more, or the step was not finite), mean_iterations.");
-  declare_object_ports(spec);
-  spec.param("max_points", 200,
-             "The fit uses a random subsample of this many of an object's points (all if fewer).",
-             {.min = 22.0, .max = 1.0e6, .origin = "measured: ~1 ms per object"})
-      .param("seed", 1, "Seed of the subsample; the same seed gives the same fit.",
-             {.min = 0.0, .max = 2.0e9})
-      .param("max_iterations", 25, "Levenberg-Marquardt iterations at most.",
-             {.min = 1.0, .max = 1000.0})
-      .param("support_weight", 1.0,
-             "Weight of the contact term (lowest point on the support plane), relative to all "
-             "points together; 0 disables it.",
-             {.min = 0.0, .max = 100.0})
-      .param("size_prior_weight", 0.1,
-             "Pull of each log size towards the initial box, as if every point were off by "
-             "weight x mean size x change of log size: it keeps sizes the points do not "
-             "constrain (the unseen back) from drifting; 0 disables it.",
-             {.min = 0.0, .max = 10.0})
-      .param("extend_without_plane", true,
-             "Without a support plane, start from the PCA box made as deep (along the viewing "
-             "ray) as its smaller other extent, grown away from the camera.");
-  GraspRule::declare(spec);
-  spec.concurrency(Concurrency::clonable);
-  return spec;
+  return spec
+      .declare(kObjectStage, kMaxPoints, kSeed, kMaxIterations, kSupportWeight, kSizePriorWeight,
+               kExtendWithoutPlane, kGraspRuleParams)
+      .concurrency(Concurrency::clonable);
 }
 
 algo::SolverSummary SuperquadricStage::fit_object(ObjectGeometry& geometry) const {
@@ -102,22 +112,21 @@ algo::SolverSummary SuperquadricStage::fit_object(ObjectGeometry& geometry) cons
 }
 
 SuperquadricStage::SuperquadricStage(const Params& params)
-    : support_tolerance_m_(params.get_double("support_tolerance_m")),
-      support_max_gap_m_(params.get_double("support_max_gap_m")),
-      extend_without_plane_(params.get_bool("extend_without_plane")),
-      grasp_rule_(GraspRule::from(params)) {
-  fit_options_.max_points = static_cast<int>(params.get_int("max_points"));
-  fit_options_.seed = static_cast<std::uint64_t>(params.get_int("seed"));
-  fit_options_.solver.max_iterations = static_cast<int>(params.get_int("max_iterations"));
-  fit_options_.support_weight = params.get_double("support_weight");
-  fit_options_.size_prior_weight = params.get_double("size_prior_weight");
+    : support_tolerance_m_(kObjectStage.support_tolerance_m(params)),
+      support_max_gap_m_(kObjectStage.support_max_gap_m(params)),
+      extend_without_plane_(kExtendWithoutPlane(params)),
+      grasp_rule_(kGraspRuleParams(params)) {
+  fit_options_.max_points = kMaxPoints(params);
+  fit_options_.seed = static_cast<std::uint64_t>(kSeed(params));
+  fit_options_.solver.max_iterations = kMaxIterations(params);
+  fit_options_.support_weight = kSupportWeight(params);
+  fit_options_.size_prior_weight = kSizePriorWeight(params);
 }
 
 void SuperquadricStage::process(ProcessContext& ctx) {
-  const auto& labels = ctx.input<LabelImage>("objects");
-  const auto& points = ctx.input<PointImage>("points");
-  const SupportPlanes* planes =
-      ctx.has_input("planes") ? &ctx.input<SupportPlanes>("planes") : nullptr;
+  const LabelImage& labels = kObjectStage.objects(ctx);
+  const PointImage& points = kObjectStage.points(ctx);
+  const SupportPlanes* planes = kObjectStage.planes(ctx);
   const auto start = std::chrono::steady_clock::now();
 
   ObjectList list;
@@ -148,7 +157,7 @@ void SuperquadricStage::process(ProcessContext& ctx) {
   ctx.metric("mean_residual_m", fitted > 0 ? residual_sum_m / fitted : 0.0);
   ctx.metric("fit_ms", fit_ms);
   report_solver_stops(ctx, summaries);
-  ctx.output("objects", std::move(list));
+  kObjectStage.models(ctx, std::move(list));
 }
 
 }  // namespace facet::shape

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::normals {
@@ -20,52 +21,42 @@ struct IntegralStage::Pcl {
   pcl::PointCloud<pcl::Normal> normals;
 };
 
-StageSpec IntegralStage::spec() {
-  return StageSpec("normals.integral",
-                   "PCL's integral-image normal estimation (pcl::IntegralImageNormalEstimation).\n"
-                   "The method robotics users know from PCL, for comparison with normals.cross "
-                   "and normals.pca: the depth image is back-projected into an organized "
-                   "pcl::PointCloud<PointXYZ> and PCL estimates metric 3D normals, smoothing "
-                   "over a window that shrinks near depth discontinuities. Parameter defaults "
-                   "are PCL 1.13's.")
-      .input<DepthImage>("depth",
-                         "Depth image with intrinsics, CV_16UC1 in mm (0 = invalid) or CV_32FC1 "
-                         "in m (0 or NaN = invalid).")
-      .output<NormalImage>("normals",
-                           "CV_32FC3 metric unit normals in the camera frame, same size and "
-                           "header as the input, flipped towards the camera (PCL's viewpoint "
-                           "0,0,0); NaN = no normal.")
-      .param("method", "average_3d_gradient",
-             "PCL's estimation method. covariance: smallest eigenvector of the window's "
-             "covariance; average_3d_gradient: cross product of the window's averaged "
-             "horizontal and vertical 3D gradients; average_depth_change: from averaged depth "
-             "changes only.",
-             {.choices = {std::string("covariance"), std::string("average_3d_gradient"),
-                          std::string("average_depth_change")},
-              .origin = "PCL 1.13 default (AVERAGE_3D_GRADIENT)"})
-      .param("max_depth_change_factor", 0.02,
-             "Depth change between neighbours that PCL treats as a discontinuity, as a factor: a "
-             "jump larger than 2 * factor * (depth_m + 1) ends the smoothing window.",
-             {.unit = "m", .min = 0.0001, .max = 10.0, .origin = "PCL 1.13 default (20 * 0.001)"})
-      .param("normal_smoothing_size", 10.0,
-             "Size of the area PCL averages over (its half-width in pixels, scaled with depth "
-             "when depth_dependent_smoothing is on).",
-             {.unit = "px", .min = 1.0, .max = 100.0, .origin = "PCL 1.13 default"})
-      .param("depth_dependent_smoothing", false,
-             "Scale the smoothing area with depth (PCL's setDepthDependentSmoothing).",
-             {.origin = "PCL 1.13 default"})
-      .concurrency(Concurrency::clonable);
-}
-
 namespace {
 
-Estimator::NormalEstimationMethod method_from(const std::string& name) {
-  if (name == "covariance") return Estimator::COVARIANCE_MATRIX;
-  if (name == "average_3d_gradient") return Estimator::AVERAGE_3D_GRADIENT;
-  if (name == "average_depth_change") return Estimator::AVERAGE_DEPTH_CHANGE;
-  throw StageError("unknown method '" + name +
-                   "' (covariance, average_3d_gradient, average_depth_change)");
-}
+const In<DepthImage> kDepth{"depth",
+                            "Depth image with intrinsics, CV_16UC1 in mm (0 = invalid) or "
+                            "CV_32FC1 in m (0 or NaN = invalid)."};
+const Out<NormalImage> kNormals{"normals",
+                                "CV_32FC3 metric unit normals in the camera frame, same size and "
+                                "header as the input, flipped towards the camera (PCL's viewpoint "
+                                "0,0,0); NaN = no normal."};
+const EnumParam<Estimator::NormalEstimationMethod> kMethod{
+    "method",
+    Estimator::AVERAGE_3D_GRADIENT,
+    {{Estimator::COVARIANCE_MATRIX, "covariance"},
+     {Estimator::AVERAGE_3D_GRADIENT, "average_3d_gradient"},
+     {Estimator::AVERAGE_DEPTH_CHANGE, "average_depth_change"}},
+    "PCL's estimation method. covariance: smallest eigenvector of the window's covariance; "
+    "average_3d_gradient: cross product of the window's averaged horizontal and vertical 3D "
+    "gradients; average_depth_change: from averaged depth changes only.",
+    {.origin = "PCL 1.13 default (AVERAGE_3D_GRADIENT)"}};
+const Param<double> kMaxDepthChangeFactor{
+    "max_depth_change_factor",
+    0.02,
+    "Depth change between neighbours that PCL treats as a discontinuity, as a factor: a jump "
+    "larger than 2 * factor * (depth_m + 1) ends the smoothing window.",
+    {.unit = "m", .min = 0.0001, .max = 10.0, .origin = "PCL 1.13 default (20 * 0.001)"}};
+const Param<double> kNormalSmoothingSize{
+    "normal_smoothing_size",
+    10.0,
+    "Size of the area PCL averages over (its half-width in pixels, scaled with depth when "
+    "depth_dependent_smoothing is on).",
+    {.unit = "px", .min = 1.0, .max = 100.0, .origin = "PCL 1.13 default"}};
+const Param<bool> kDepthDependentSmoothing{
+    "depth_dependent_smoothing",
+    false,
+    "Scale the smoothing area with depth (PCL's setDepthDependentSmoothing).",
+    {.origin = "PCL 1.13 default"}};
 
 template <class DepthT>
 void fill_cloud(const cv::Mat& depth, const CameraIntrinsics& camera, float to_m,
@@ -92,19 +83,32 @@ void fill_cloud(const cv::Mat& depth, const CameraIntrinsics& camera, float to_m
 
 }  // namespace
 
+StageSpec IntegralStage::spec() {
+  StageSpec spec("normals.integral",
+                 "PCL's integral-image normal estimation (pcl::IntegralImageNormalEstimation).\n"
+                 "The method robotics users know from PCL, for comparison with normals.cross and "
+                 "normals.pca: the depth image is back-projected into an organized "
+                 "pcl::PointCloud<PointXYZ> and PCL estimates metric 3D normals, smoothing over a "
+                 "window that shrinks near depth discontinuities. Parameter defaults are PCL "
+                 "1.13's.");
+  return spec
+      .declare(kDepth, kNormals, kMethod, kMaxDepthChangeFactor, kNormalSmoothingSize,
+               kDepthDependentSmoothing)
+      .concurrency(Concurrency::clonable);
+}
+
 IntegralStage::IntegralStage(const Params& params) : pcl_(std::make_unique<Pcl>()) {
   Estimator& estimator = pcl_->estimator;
-  estimator.setNormalEstimationMethod(method_from(params.get_string("method")));
-  estimator.setMaxDepthChangeFactor(
-      static_cast<float>(params.get_double("max_depth_change_factor")));
-  estimator.setNormalSmoothingSize(static_cast<float>(params.get_double("normal_smoothing_size")));
-  estimator.setDepthDependentSmoothing(params.get_bool("depth_dependent_smoothing"));
+  estimator.setNormalEstimationMethod(kMethod(params));
+  estimator.setMaxDepthChangeFactor(static_cast<float>(kMaxDepthChangeFactor(params)));
+  estimator.setNormalSmoothingSize(static_cast<float>(kNormalSmoothingSize(params)));
+  estimator.setDepthDependentSmoothing(kDepthDependentSmoothing(params));
 }
 
 IntegralStage::~IntegralStage() = default;
 
 void IntegralStage::process(ProcessContext& ctx) {
-  const auto& input = ctx.input<DepthImage>("depth");
+  const DepthImage& input = kDepth(ctx);
   if (input.depth.empty()) throw StageError("input depth image is empty");
   if (!(input.camera.fx > 0.0 && input.camera.fy > 0.0)) {
     throw StageError("the depth image carries no camera intrinsics (fx, fy)");
@@ -140,7 +144,7 @@ void IntegralStage::process(ProcessContext& ctx) {
       out[3 * u + 2] = normal.normal_z;
     }
   }
-  ctx.output("normals", std::move(output));
+  kNormals(ctx, std::move(output));
 }
 
 }  // namespace facet::normals
