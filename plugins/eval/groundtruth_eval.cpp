@@ -16,8 +16,8 @@ const OptionalIn<LabelImage> kTruth{
     "truth",
     "Ground-truth ids of the same size (0 = background), e.g. io.frames' labels; an "
     "empty packet (no label file for this frame) skips the frame."};
-const Param<std::string> kTruthBackground{
-    "truth_background", "",
+const Param<LabelIds> kTruthBackground{
+    "truth_background", LabelIds{},
     "Truth ids treated as background besides 0, comma-separated (e.g. \"1\" for a "
     "table labelled 1); empty = only 0."};
 const Param<std::int64_t> kMinTruthPixels{
@@ -38,35 +38,6 @@ const Param<double> kCover{
     {.min = 0.0, .max = 1.0, .origin = "UOIS (Xie et al.)"}};
 
 }  // namespace
-
-std::set<std::int32_t> parse_label_list(const std::string& text, const char* param) {
-  std::set<std::int32_t> labels;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(',', start);
-    if (end == std::string::npos) end = text.size();
-    std::size_t first = start;
-    std::size_t last = end;
-    while (first < last && text[first] == ' ')
-      ++first;
-    while (last > first && text[last - 1] == ' ')
-      --last;
-    if (first < last) {
-      std::int32_t value = 0;
-      const auto [ptr, error] = std::from_chars(text.data() + first, text.data() + last, value);
-      if (error != std::errc() || ptr != text.data() + last || value <= 0) {
-        throw StageError("param '" + std::string(param) + "': '" +
-                         text.substr(first, last - first) +
-                         "' is not a positive label id (expected e.g. \"1\" or \"1, 4\")");
-      }
-      labels.insert(value);
-    } else if (end < text.size()) {
-      throw StageError("param '" + std::string(param) + "': empty entry in '" + text + "'");
-    }
-    start = end + 1;
-  }
-  return labels;
-}
 
 StageSpec GroundTruthEval::spec() {
   return StageSpec(
@@ -89,8 +60,7 @@ StageSpec GroundTruthEval::spec() {
 }
 
 GroundTruthEval::GroundTruthEval(const Params& params) {
-  options_.truth_background =
-      parse_label_list(kTruthBackground(params), kTruthBackground.name().c_str());
+  options_.truth_background = kTruthBackground(params).ids;
   options_.min_truth_pixels = kMinTruthPixels(params);
   options_.segmented_f = kSegmentedF(params);
   options_.cover = kCover(params);
@@ -126,3 +96,46 @@ void GroundTruthEval::process(ProcessContext& ctx) {
 }
 
 }  // namespace facet::eval
+
+std::variant<facet::eval::LabelIds, std::string> facet::ParamTraits<facet::eval::LabelIds>::parse(
+    std::string_view text) {
+  eval::LabelIds labels;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(',', start);
+    if (end == std::string_view::npos) end = text.size();
+    std::size_t first = start;
+    std::size_t last = end;
+    while (first < last && text[first] == ' ')
+      ++first;
+    while (last > first && text[last - 1] == ' ')
+      --last;
+    if (first < last) {
+      std::int32_t value = 0;
+      const auto [ptr, error] = std::from_chars(text.data() + first, text.data() + last, value);
+      if (error != std::errc() || ptr != text.data() + last || value <= 0) {
+        std::string why = "'";
+        why.append(text.substr(first, last - first));
+        why.append("' is not a positive label id (expected e.g. \"1\" or \"1, 4\")");
+        return why;
+      }
+      labels.ids.insert(value);
+    } else if (end < text.size()) {
+      std::string why = "empty entry in '";
+      why.append(text);
+      why.append("'");
+      return why;
+    }
+    start = end + 1;
+  }
+  return labels;
+}
+
+std::string facet::ParamTraits<facet::eval::LabelIds>::format(const eval::LabelIds& value) {
+  std::string text;
+  for (const std::int32_t id : value.ids) {
+    if (!text.empty()) text += ", ";
+    text += std::to_string(id);
+  }
+  return text;
+}

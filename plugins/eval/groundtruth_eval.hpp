@@ -2,7 +2,14 @@
 // eval.groundtruth: scores predicted segment ids against ground-truth labels, frame by frame,
 // and reports the scores as metrics (see overlap_scores.hpp for the measures).
 
+#include <cstdint>
+#include <set>
+#include <string>
+#include <string_view>
+#include <variant>
+
 #include "eval/overlap_scores.hpp"
+#include "facet/contract.hpp"
 #include "facet/stage.hpp"
 
 namespace facet::eval {
@@ -18,7 +25,16 @@ class GroundTruthEval final : public Stage {
   OverlapOptions options_;
 };
 
-// "1, 4" -> {1, 4}; throws StageError naming the parameter on anything but integers.
-std::set<std::int32_t> parse_label_list(const std::string& text, const char* param);
+// A set of positive label ids, written "1, 4" (empty = none): eval.groundtruth's
+// truth_background.
+struct LabelIds {
+  std::set<std::int32_t> ids;
+};
 
 }  // namespace facet::eval
+
+template <>
+struct facet::ParamTraits<facet::eval::LabelIds> {
+  static std::variant<facet::eval::LabelIds, std::string> parse(std::string_view text);
+  static std::string format(const facet::eval::LabelIds& value);
+};

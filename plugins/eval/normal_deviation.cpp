@@ -40,33 +40,41 @@ std::vector<double> angular_deviations_deg(const cv::Mat& normals_before,
   return degrees;
 }
 
-cv::Rect parse_roi(const std::string& text, const char* param) {
-  if (text.find_first_not_of(' ') == std::string::npos) return {};
+}  // namespace facet::eval
+
+std::variant<facet::eval::PixelRect, std::string> facet::ParamTraits<facet::eval::PixelRect>::parse(
+    std::string_view text) {
+  if (text.find_first_not_of(' ') == std::string_view::npos) return eval::PixelRect{};
   int values[4] = {0, 0, 0, 0};
   const char* cursor = text.data();
   const char* end = text.data() + text.size();
-  const auto fail = [&] {
-    return StageError("param '" + std::string(param) + "': '" + text +
-                      "' is no rectangle (expected \"x, y, width, height\" in pixels, width "
-                      "and height positive)");
-  };
+  std::string refused = "'";
+  refused.append(text);
+  refused.append(
+      "' is no rectangle (expected \"x, y, width, height\" in pixels, width and height "
+      "positive)");
   for (int i = 0; i < 4; ++i) {
     while (cursor < end && *cursor == ' ')
       ++cursor;
     const auto [ptr, error] = std::from_chars(cursor, end, values[i]);
-    if (error != std::errc()) throw fail();
+    if (error != std::errc()) return refused;
     cursor = ptr;
     while (cursor < end && *cursor == ' ')
       ++cursor;
     if (i < 3) {
-      if (cursor == end || *cursor != ',') throw fail();
+      if (cursor == end || *cursor != ',') return refused;
       ++cursor;
     }
   }
   if (cursor != end || values[0] < 0 || values[1] < 0 || values[2] <= 0 || values[3] <= 0) {
-    throw fail();
+    return refused;
   }
-  return {values[0], values[1], values[2], values[3]};
+  return eval::PixelRect{cv::Rect(values[0], values[1], values[2], values[3])};
 }
 
-}  // namespace facet::eval
+std::string facet::ParamTraits<facet::eval::PixelRect>::format(const eval::PixelRect& value) {
+  if (value.rect.empty()) return "";
+  const cv::Rect& r = value.rect;
+  return std::to_string(r.x) + ", " + std::to_string(r.y) + ", " + std::to_string(r.width) + ", " +
+         std::to_string(r.height);
+}

@@ -4,7 +4,11 @@
 
 #include <opencv2/core.hpp>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
+
+#include "facet/contract.hpp"
 
 namespace facet::eval {
 
@@ -14,8 +18,16 @@ namespace facet::eval {
 std::vector<double> angular_deviations_deg(const cv::Mat& normals_before,
                                            const cv::Mat& normals_after, const cv::Mat& region);
 
-// "x, y, width, height" in pixels -> the rectangle; empty text -> an empty rectangle. Throws
-// StageError naming `param` on anything else.
-cv::Rect parse_roi(const std::string& text, const char* param);
+// A region of the image, written "x, y, width, height" in pixels (empty = none, an empty
+// rectangle): eval.normal_stability's roi.
+struct PixelRect {
+  cv::Rect rect;
+};
 
 }  // namespace facet::eval
+
+template <>
+struct facet::ParamTraits<facet::eval::PixelRect> {
+  static std::variant<facet::eval::PixelRect, std::string> parse(std::string_view text);
+  static std::string format(const facet::eval::PixelRect& value);
+};

@@ -17,9 +17,9 @@ const OptionalIn<LabelImage> kPlaneLabels{
     "plane_labels",
     "Plane ids (0 = none) of the same size, e.g. planes.support's plane_labels: the "
     "largest plane becomes the region."};
-const Param<std::string> kRoi{
+const Param<PixelRect> kRoi{
     "roi",
-    "",
+    PixelRect{},
     "The region, \"x, y, width, height\" in pixels (cut to the image); empty = the "
     "whole largest plane (then plane_labels must be connected).",
     {.unit = "px", .origin = "paper: a 10x10 patch of the table"}};
@@ -61,8 +61,7 @@ StageSpec NormalStabilityEval::spec() {
       .concurrency(Concurrency::serial);
 }
 
-NormalStabilityEval::NormalStabilityEval(const Params& params)
-    : roi_(parse_roi(kRoi(params), kRoi.name().c_str())) {}
+NormalStabilityEval::NormalStabilityEval(const Params& params) : roi_(kRoi(params).rect) {}
 
 cv::Mat NormalStabilityEval::region_of(ProcessContext& ctx, const cv::Size& size) const {
   cv::Mat region;

@@ -68,4 +68,23 @@ std::optional<Rgb> parse_hex_colour(std::string_view text) {
   return Rgb{channels[0], channels[1], channels[2]};
 }
 
+std::string hex_colour(const Rgb& colour) {
+  constexpr char kDigits[] = "0123456789abcdef";
+  std::string text = "#";
+  for (const std::uint8_t channel : {colour.r, colour.g, colour.b}) {
+    text += kDigits[channel / 16];
+    text += kDigits[channel % 16];
+  }
+  return text;
+}
+
 }  // namespace facet::io
+
+std::variant<facet::io::Rgb, std::string> facet::ParamTraits<facet::io::Rgb>::parse(
+    std::string_view text) {
+  if (const auto colour = io::parse_hex_colour(text)) return *colour;
+  std::string why = "'";
+  why.append(text);
+  why.append("' is not a colour; write it as #rrggbb, e.g. #ff00ff");
+  return why;
+}

@@ -4,7 +4,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <variant>
+
+#include "facet/contract.hpp"
 
 namespace facet::io {
 
@@ -25,4 +29,14 @@ Rgb label_colour(std::uint32_t id);
 // Parses "#rrggbb" (or "rrggbb"), hexadecimal, either case; nothing when it is not one.
 std::optional<Rgb> parse_hex_colour(std::string_view text);
 
+// "#rrggbb", lower case.
+std::string hex_colour(const Rgb& colour);
+
 }  // namespace facet::io
+
+// A colour parameter (io.overlay's border_colour and edge_colour), written "#rrggbb".
+template <>
+struct facet::ParamTraits<facet::io::Rgb> {
+  static std::variant<facet::io::Rgb, std::string> parse(std::string_view text);
+  static std::string format(const facet::io::Rgb& colour) { return facet::io::hex_colour(colour); }
+};

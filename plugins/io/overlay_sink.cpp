@@ -44,25 +44,15 @@ const Param<double> kAlpha{
     {.min = 0.0, .max = 1.0, .origin = "half: colour and the depth's shading both show"}};
 const Param<bool> kDrawBorders{"draw_borders", true,
                                "Draw the border pixels of every segment in border_colour."};
-const Param<std::string> kBorderColour{"border_colour", "#000000",
-                                       "Colour of segment borders, #rrggbb."};
+const Param<Rgb> kBorderColour{"border_colour", Rgb{0, 0, 0},
+                               "Colour of segment borders, #rrggbb."};
 const Param<bool> kDrawEdges{"draw_edges", true,
                              "Draw the edge mask of the 'edges' input (when connected) in "
                              "edge_colour."};
-const Param<std::string> kEdgeColour{"edge_colour",
-                                     "#ff00ff",
-                                     "Colour of edge pixels, #rrggbb.",
-                                     {.origin = "magenta: rare in the palette's blended colours"}};
-
-Rgb parse_colour_param(const Params& params, const Param<std::string>& param) {
-  const std::string text = param(params);
-  const auto colour = parse_hex_colour(text);
-  if (!colour) {
-    throw StageError("param '" + param.name() + "': '" + text +
-                     "' is not a colour; write it as #rrggbb, e.g. #ff00ff");
-  }
-  return *colour;
-}
+const Param<Rgb> kEdgeColour{"edge_colour",
+                             Rgb{0xff, 0x00, 0xff},
+                             "Colour of edge pixels, #rrggbb.",
+                             {.origin = "magenta: rare in the palette's blended colours"}};
 
 }  // namespace
 
@@ -88,9 +78,9 @@ OverlaySink::OverlaySink(const Params& params) : dir_(kDir(params)) {
   style_.far_m = kFarM(params);
   style_.alpha = kAlpha(params);
   style_.draw_borders = kDrawBorders(params);
-  style_.border_colour = parse_colour_param(params, kBorderColour);
+  style_.border_colour = kBorderColour(params);
   style_.draw_edges = kDrawEdges(params);
-  style_.edge_colour = parse_colour_param(params, kEdgeColour);
+  style_.edge_colour = kEdgeColour(params);
   if (style_.far_m > 0.0 && style_.far_m <= style_.near_m) {
     throw StageError("far_m (" + std::to_string(style_.far_m) + ") must be above near_m (" +
                      std::to_string(style_.near_m) + "), or 0 for a range per frame");

@@ -85,12 +85,24 @@ TEST(GroundTruthEval, TruthBackgroundParameter) {
   EXPECT_DOUBLE_EQ(metrics.at("recall"), 1.0);
 }
 
-TEST(ParseLabelList, AcceptsListsAndRejectsJunk) {
-  EXPECT_TRUE(parse_label_list("", "p").empty());
-  EXPECT_EQ(parse_label_list("1, 4,7", "p"), (std::set<std::int32_t>{1, 4, 7}));
-  EXPECT_THROW(parse_label_list("1,x", "p"), StageError);
-  EXPECT_THROW(parse_label_list("1,,2", "p"), StageError);
-  EXPECT_THROW(parse_label_list("0", "p"), StageError);
+// truth_background is a structured parameter: its parser runs where values are validated.
+TEST(TruthBackground, AcceptsListsAndRejectsJunkWithTheReason) {
+  using Traits = facet::ParamTraits<facet::eval::LabelIds>;
+  EXPECT_TRUE(std::get<facet::eval::LabelIds>(Traits::parse("")).ids.empty());
+  EXPECT_EQ(std::get<facet::eval::LabelIds>(Traits::parse("1, 4,7")).ids,
+            (std::set<std::int32_t>{1, 4, 7}));
+  EXPECT_EQ(Traits::format({{1, 4, 7}}), "1, 4, 7");
+  EXPECT_EQ(std::get<std::string>(Traits::parse("1,x")),
+            "'x' is not a positive label id (expected e.g. \"1\" or \"1, 4\")");
+  EXPECT_EQ(std::get<std::string>(Traits::parse("1,,2")), "empty entry in '1,,2'");
+  EXPECT_TRUE(std::holds_alternative<std::string>(Traits::parse("0")));
+  // The runner validates like facet validate: the stage is never built with a bad list.
+  try {
+    StageRunner<GroundTruthEval> runner({{"truth_background", std::string("1, x")}});
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("truth_background"), std::string::npos);
+  }
 }
 
 }  // namespace

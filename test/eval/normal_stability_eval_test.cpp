@@ -94,11 +94,21 @@ TEST(NormalStabilityEval, LargestPlaneIsTheRegion) {
 }
 
 TEST(NormalStabilityEval, ParsesTheRoi) {
-  EXPECT_EQ(parse_roi("1, 2,3 ,4", "roi"), cv::Rect(1, 2, 3, 4));
-  EXPECT_TRUE(parse_roi("", "roi").empty());
-  EXPECT_THROW(parse_roi("1, 2, 3", "roi"), StageError);
-  EXPECT_THROW(parse_roi("1, 2, 0, 4", "roi"), StageError);
-  EXPECT_THROW(parse_roi("a, 2, 3, 4", "roi"), StageError);
+  using Traits = facet::ParamTraits<facet::eval::PixelRect>;
+  const auto rect = [](std::string_view text) {
+    return std::get<facet::eval::PixelRect>(Traits::parse(text)).rect;
+  };
+  EXPECT_EQ(rect("1, 2,3 ,4"), cv::Rect(1, 2, 3, 4));
+  EXPECT_TRUE(rect("").empty());
+  EXPECT_EQ(Traits::format({cv::Rect(1, 2, 3, 4)}), "1, 2, 3, 4");
+  EXPECT_EQ(Traits::format({}), "");
+  for (const char* bad : {"1, 2, 3", "1, 2, 0, 4", "a, 2, 3, 4"}) {
+    const auto parsed = Traits::parse(bad);
+    ASSERT_TRUE(std::holds_alternative<std::string>(parsed)) << bad;
+    EXPECT_NE(std::get<std::string>(parsed).find("is no rectangle"), std::string::npos);
+  }
+  EXPECT_THROW(StageRunner<NormalStabilityEval>({{"roi", std::string("1, 2, 3")}}),
+               std::invalid_argument);
 }
 
 TEST(NormalStabilityEval, NoRegionIsAClearError) {
