@@ -68,8 +68,8 @@ void count_contacts(const std::int32_t* here, const std::int32_t* below, int beg
 
 }  // namespace
 
-PatchAdjacency find_patch_contacts(const cv::Mat& labels, std::int32_t count) {
-  if (labels.type() != CV_32SC1) throw std::invalid_argument("labels must be CV_32SC1");
+PatchAdjacency find_patch_contacts(const LabelImage& patches) {
+  const cv::Mat& labels = patches.labels;
   // Most of an image lies inside one patch (or outside all): blocks whose pixels and
   // neighbours share one label are skipped after a vectorised test.
   constexpr int kBlockPx = 32;
@@ -84,8 +84,8 @@ PatchAdjacency find_patch_contacts(const cv::Mat& labels, std::int32_t count) {
       count_contacts(here, below, begin, end, width, counter);
     }
   }
-  PatchAdjacency adjacency;
-  adjacency.count = count;
+  auto adjacency = of_frame<PatchAdjacency>(patches);
+  adjacency.count = patches.count;
   counter.write_to(adjacency);
   return adjacency;
 }

@@ -53,18 +53,16 @@ PointsStage::PointsStage(const Params& params) : range_{kMinDepth(params), kMaxD
 
 void PointsStage::process(ProcessContext& ctx) {
   const DepthImage& input = kDepth(ctx);
-  if (input.depth.empty()) throw StageError("input depth image is empty");
   if (!input.camera.valid()) {
     throw StageError("the depth image carries no camera intrinsics (fx, fy, width, height)");
   }
-  PointImage output;
-  static_cast<FrameHeader&>(output) = input;
+  cv::Mat points;
   try {
-    output.points = back_project(input.depth, input.camera, range_);
+    points = back_project(input.depth, input.camera, range_);
   } catch (const std::invalid_argument& error) {
     throw StageError(error.what());
   }
-  kPoints(ctx, std::move(output));
+  kPoints(ctx, PointImage::make(input, std::move(points)));
 }
 
 }  // namespace facet::convert

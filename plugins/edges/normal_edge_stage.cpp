@@ -68,17 +68,11 @@ NormalEdgeStage::NormalEdgeStage(const Params& params, DirectionCombine combine)
 
 void NormalEdgeStage::process(ProcessContext& ctx) {
   const NormalImage& input = kNormals(ctx);
-  if (input.normals.empty()) throw StageError("input normal image is empty");
-  if (input.normals.type() != CV_32FC3) {
-    throw StageError("input normals must be CV_32FC3 (3 float channels)");
-  }
-  EdgeImage output;
-  static_cast<FrameHeader&>(output) = input;
-  output.score = scorer_.score(input.normals, ctx.parallel_runner());
-  output.mask = edge_mask(output.score, threshold_);
-  const double edge_pixels = cv::countNonZero(output.mask);
-  ctx.metric("edge_ratio", edge_pixels / static_cast<double>(output.mask.total()));
-  kEdges(ctx, std::move(output));
+  cv::Mat score = scorer_.score(input.normals, ctx.parallel_runner());
+  cv::Mat mask = edge_mask(score, threshold_);
+  const double edge_pixels = cv::countNonZero(mask);
+  ctx.metric("edge_ratio", edge_pixels / static_cast<double>(mask.total()));
+  kEdges(ctx, EdgeImage::make(input, std::move(score), std::move(mask)));
 }
 
 }  // namespace facet::edges

@@ -68,7 +68,7 @@ GroundTruthEval::GroundTruthEval(const Params& params) {
 
 void GroundTruthEval::process(ProcessContext& ctx) {
   const LabelImage* truth_input = kTruth(ctx);
-  if (truth_input == nullptr || truth_input->labels.empty()) {
+  if (truth_input == nullptr) {
     ctx.metric("scored", 0.0);
     return;
   }

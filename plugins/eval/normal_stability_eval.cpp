@@ -6,7 +6,6 @@
 
 #include "eval/normal_deviation.hpp"
 #include "facet/contract.hpp"
-#include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::eval {
@@ -67,7 +66,6 @@ cv::Mat NormalStabilityEval::region_of(ProcessContext& ctx, const cv::Size& size
   cv::Mat region;
   if (const LabelImage* plane_labels = kPlaneLabels(ctx)) {
     const cv::Mat& planes = plane_labels->labels;
-    require_type(planes, CV_32SC1, "plane_labels");
     if (planes.size() != size) {
       throw StageError("inputs 'normals' and 'plane_labels' differ in size");
     }
@@ -94,7 +92,6 @@ cv::Mat NormalStabilityEval::region_of(ProcessContext& ctx, const cv::Size& size
 
 void NormalStabilityEval::process(ProcessContext& ctx) {
   const cv::Mat& normals = kNormals(ctx).normals;
-  require_type(normals, CV_32FC3, "normals");
   const cv::Mat region = region_of(ctx, normals.size());
   if (has_previous_ && previous_normals_.size() != normals.size()) {
     throw StageError("input 'normals': the size changed from one frame to the next");

@@ -62,11 +62,9 @@ StabilityEval::StabilityEval(const Params& params) {
 
 void StabilityEval::process(ProcessContext& ctx) {
   const cv::Mat& labels = kLabels(ctx).labels;
-  require_type(labels, CV_32SC1, "labels");
   cv::Mat points;
   if (const PointImage* input = kPoints(ctx)) {
     points = input->points;
-    require_type(points, CV_32FC3, "points");
     require_same_size(labels, "labels", points, "points");
   }
   if (has_previous_) {

@@ -101,16 +101,14 @@ MedianFilter::MedianFilter(const Params& params)
 
 void MedianFilter::process(ProcessContext& ctx) {
   const DepthImage& input = kDepthIn(ctx);
-  if (input.depth.empty()) throw StageError("input depth image is empty");
-  DepthImage output;
-  static_cast<FrameHeader&>(output) = input;
+  cv::Mat filtered;
   try {
-    output.depth = median_.apply(input.depth);
+    filtered = median_.apply(input.depth);
   } catch (const std::invalid_argument& error) {
     throw StageError(error.what());
   }
   if (!median_.fill_holes()) warn_about_pinholes(input.depth, ctx);
-  kDepthOut(ctx, std::move(output));
+  kDepthOut(ctx, DepthImage::make(input, std::move(filtered)));
 }
 
 void MedianFilter::warn_about_pinholes(const cv::Mat& depth, ProcessContext& ctx) const {

@@ -100,13 +100,9 @@ GrowSurfaces::GrowSurfaces(const Params& params)
 void GrowSurfaces::process(ProcessContext& ctx) {
   const EdgeImage& edges = kEdges(ctx);
   const PointImage& points = kPoints(ctx);
-  if (edges.mask.empty() || edges.mask.type() != CV_8UC1) {
-    throw StageError("input edges.mask must be a non-empty CV_8UC1 image");
-  }
-  require_type(points.points, CV_32FC3, "points");
   require_same_size(edges.mask, "edges", points.points, "points");
-  // The assignment reads images as flat arrays.
-  const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
+  // The assignment reads images as flat arrays, which packet images are.
+  const cv::Mat& xyz = points.points;
 
   // Surface = not an edge and a valid 3D point, so a patch never holds a pixel without a point,
   // whatever produced the edge mask.
@@ -114,16 +110,12 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   SurfaceRegions regions = regions_.label(classes, connectivity_, min_size_px_);
   const AssignmentResult assigned = assignment_.assign(regions.labels, classes, xyz);
 
-  PatchAdjacency adjacency = algo::find_patch_contacts(regions.labels, regions.count);
-  static_cast<FrameHeader&>(adjacency) = points;
-  LabelImage patches;
-  static_cast<FrameHeader&>(patches) = points;
-  patches.labels = std::move(regions.labels);
-  patches.count = regions.count;
+  LabelImage patches = LabelImage::make(points, std::move(regions.labels), regions.count);
+  PatchAdjacency adjacency = algo::find_patch_contacts(patches);
 
   const auto valid_px =
       static_cast<double>(regions.labelled_px + assigned.assigned_px + assigned.unassigned_px);
-  ctx.metric("patches", regions.count);
+  ctx.metric("patches", patches.count);
   const double unassigned_ratio =
       valid_px > 0.0 ? static_cast<double>(assigned.unassigned_px) / valid_px : 0.0;
   ctx.metric("unassigned_ratio", unassigned_ratio);

@@ -176,31 +176,10 @@ void CloudSink::process(ProcessContext& ctx) {
   const PointImage& points = kPoints(ctx);
   const std::filesystem::path file =
       std::filesystem::path(frame_file(dir_, points.frame)).replace_extension(".ply");
-  if (points.points.type() != CV_32FC3) {
-    throw StageError("cannot write '" + file.string() + "': points must be CV_32FC3 (metres)");
-  }
-  cv::Mat ids;
-  const LabelImage* input_labels = kLabels(ctx);
-  if (input_labels != nullptr && !input_labels->labels.empty()) {
-    const cv::Mat& labels = input_labels->labels;
-    if (labels.channels() != 1 ||
-        (labels.depth() != CV_32S && labels.depth() != CV_16U && labels.depth() != CV_8U)) {
-      throw StageError("cannot write '" + file.string() +
-                       "': labels must be single-channel CV_32S, CV_16U or CV_8U");
-    }
-    require_same_size(points.points, "points", labels, "labels");
-    if (labels.depth() == CV_32S) {
-      ids = labels;
-    } else {
-      labels.convertTo(ids, CV_32S);
-    }
-    double min_label = 0.0;
-    cv::minMaxLoc(ids, &min_label);
-    if (min_label < 0.0) {
-      throw StageError("cannot write '" + file.string() + "': negative label " +
-                       std::to_string(static_cast<long long>(min_label)) +
-                       " (PLY labels are unsigned)");
-    }
+  cv::Mat ids;  // CV_32SC1 with ids of 0 or more (LabelImage's format), so PLY's unsigned labels
+  if (const LabelImage* labels = kLabels(ctx); labels != nullptr) {
+    require_same_size(points.points, "points", labels->labels, "labels");
+    ids = labels->labels;
   }
   const std::string comment =
       "facet io.cloud, frame " +

@@ -42,24 +42,13 @@ void EdgesSink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
   const EdgeImage& edges = kEdges(ctx);
   const std::filesystem::path file = frame_file(dir_, edges.frame);
-  const cv::Mat& source = write_score_ ? edges.score : edges.mask;
-  if (source.empty()) {
-    throw StageError("cannot write '" + file.string() + "': the edge image has no " +
-                     (write_score_ ? "score" : "mask"));
-  }
   if (!write_score_) {
-    if (source.type() != CV_8UC1) {
-      throw StageError("cannot write '" + file.string() + "': the edge mask must be CV_8UC1");
-    }
-    write_png(file, source);
+    write_png(file, edges.mask);
     return;
-  }
-  if (source.type() != CV_32FC1) {
-    throw StageError("cannot write '" + file.string() + "': the edge score must be CV_32FC1");
   }
   cv::Mat scaled;
   // NaN scores (which a correct edge stage never emits) would be undefined in convertTo: map to 0.
-  cv::Mat clean = source.clone();
+  cv::Mat clean = edges.score.clone();
   cv::patchNaNs(clean, 0.0);
   clean.convertTo(scaled, CV_8UC1, 255.0);  // saturating: < 0 → 0, > 1 → 255
   write_png(file, scaled);

@@ -95,11 +95,10 @@ void FramesSource::open(const OpenContext& /*ctx*/) {
       !labels_dir_param_.empty() && fs::is_directory(labels_dir, error) ? labels_dir : fs::path();
 }
 
-void FramesSource::read_frame(std::size_t index, DepthImage& depth, LabelImage& labels) const {
+void FramesSource::read_frame(std::size_t index, cv::Mat& depth, cv::Mat& labels) const {
   const fs::path& depth_file = listing_.depth_files[index];
-  depth.depth =
-      depth_to_millimetres(read_depth_png(depth_file, camera_),
-                           depth_scale_ > 0.0 ? depth_scale_ : listing_.depth_units_per_metre);
+  depth = depth_to_millimetres(read_depth_png(depth_file, camera_),
+                               depth_scale_ > 0.0 ? depth_scale_ : listing_.depth_units_per_metre);
   // The flat layout pairs labels by name in the same folder; labels_dir "" still means none.
   const bool paired = !listing_.label_files.empty();
   if (labels_dir_param_.empty() || (!paired && labels_dir_.empty())) return;
@@ -107,10 +106,7 @@ void FramesSource::read_frame(std::size_t index, DepthImage& depth, LabelImage& 
       paired ? listing_.label_files[index] : labels_dir_ / depth_file.filename();
   std::error_code error;
   if (!fs::exists(label_file, error)) return;
-  labels.labels = read_label_png(label_file, camera_);
-  double max_label = 0.0;
-  cv::minMaxLoc(labels.labels, nullptr, &max_label);
-  labels.count = static_cast<std::int32_t>(max_label);
+  labels = read_label_png(label_file, camera_);
 }
 
 void FramesSource::process(ProcessContext& ctx) {
@@ -130,8 +126,8 @@ void FramesSource::process(ProcessContext& ctx) {
     header.frame.stream_frames = playback_.stream_frames();
     header.frame.timestamp_ns = listing_.timestamps_ns.empty() ? playback_.nominal_timestamp_ns()
                                                                : listing_.timestamps_ns[index];
-    DepthImage depth{header, {}};
-    LabelImage labels{header, {}, 0};
+    cv::Mat depth;
+    cv::Mat labels;  // stays empty when the frame has no labels
     try {
       read_frame(index, depth, labels);
     } catch (const StageError& error) {
@@ -140,16 +136,16 @@ void FramesSource::process(ProcessContext& ctx) {
       continue;
     }
 
-    const double pixels = static_cast<double>(depth.depth.total());
-    const int valid_px = cv::countNonZero(depth.depth);
+    const double pixels = static_cast<double>(depth.total());
+    const int valid_px = cv::countNonZero(depth);
     // Not an error (a sensor covered or pointed at the sky delivers such frames): the frame runs
     // through the graph, which finds nothing in it; the warning tells the user why.
     if (valid_px == 0) {
       ctx.warn("no valid depth in '" + depth_file.filename().string() + "': every pixel is 0");
     }
     ctx.metric("valid_ratio", static_cast<double>(valid_px) / pixels);
-    kDepth(ctx, std::move(depth));
-    if (!labels.labels.empty()) kLabels(ctx, std::move(labels));
+    kDepth(ctx, DepthImage::make(header, std::move(depth)));
+    if (!labels.empty()) kLabels(ctx, LabelImage::counted(header, std::move(labels)));
     playback_.emitted();
     return;
   }

@@ -28,7 +28,7 @@ class FramesSource final : public Stage {
 
  private:
   // Reads frame `index` of the listing; throws StageError naming the file when it is unusable.
-  void read_frame(std::size_t index, DepthImage& depth, LabelImage& labels) const;
+  void read_frame(std::size_t index, cv::Mat& depth, cv::Mat& labels) const;
 
   // Parameters.
   std::string path_;

@@ -19,7 +19,7 @@ StageSpec LabelsSink::spec() {
                  "Writes label images as <dir>/<stem>.png, 16-bit, 0 = background.\n"
                  "The same format as the ground truth io.frames reads, so results can be "
                  "scored and viewed with the same tools. Frames with an empty label packet "
-                 "are not written. Fails on negative ids or ids above 65535.");
+                 "are not written. Fails on ids above 65535.");
   return spec.declare(kLabels, kDir).concurrency(Concurrency::serial);
 }
 
@@ -34,9 +34,7 @@ void LabelsSink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
   if (kLabels.packet(ctx).empty()) return;
   const LabelImage& input = kLabels(ctx);
-  const cv::Mat& labels = input.labels;
-  if (labels.empty()) return;
-  write_label_png(frame_file(dir_, input.frame), labels);
+  write_label_png(frame_file(dir_, input.frame), input.labels);
 }
 
 }  // namespace facet::io

@@ -123,7 +123,6 @@ void OverlaySink::process(ProcessContext& ctx) {
     if (edges.mask.empty()) {
       throw StageError("cannot write '" + file.string() + "': the edge image has no mask");
     }
-    require_type(edges.mask, CV_8UC1, "edges");
     require_same_size(depth.depth, "depth", edges.mask, "edges");
     mask = edges.mask;
   }

@@ -83,21 +83,19 @@ CrossStage::CrossStage(const Params& params)
 
 void CrossStage::process(ProcessContext& ctx) {
   const DepthImage& input = kDepth(ctx);
-  if (input.depth.empty()) throw StageError("input depth image is empty");
   depth_to_z(input.depth, space_, z_);
   make_pixel_grid(space_, input.camera, z_.cols, z_.rows, grid_);
 
-  NormalImage output;
-  static_cast<FrameHeader&>(output) = input;
+  cv::Mat normals;
   if (smooth_radius_px_ == 0) {
-    cross_normals(z_, grid_, options_, output.normals, ctx.parallel_runner());
+    cross_normals(z_, grid_, options_, normals, ctx.parallel_runner());
   } else {
     // Row by row: the unsmoothed normals never leave the cache as a whole image.
     smoother_.apply(
         z_.rows, z_.cols,
-        [&](int y, float* row) { cross_normals_row(z_, grid_, options_, y, row); }, output.normals);
+        [&](int y, float* row) { cross_normals_row(z_, grid_, options_, y, row); }, normals);
   }
-  kNormals(ctx, std::move(output));
+  kNormals(ctx, NormalImage::make(input, std::move(normals)));
 }
 
 }  // namespace facet::normals

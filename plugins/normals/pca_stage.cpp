@@ -60,13 +60,11 @@ PcaStage::PcaStage(const Params& params)
 
 void PcaStage::process(ProcessContext& ctx) {
   const DepthImage& input = kDepth(ctx);
-  if (input.depth.empty()) throw StageError("input depth image is empty");
   depth_to_z(input.depth, space_, z_);
   make_pixel_grid(space_, input.camera, z_.cols, z_.rows, grid_);
-  NormalImage output;
-  static_cast<FrameHeader&>(output) = input;
-  pca_.apply(z_, grid_, output.normals);
-  kNormals(ctx, std::move(output));
+  cv::Mat normals;
+  pca_.apply(z_, grid_, normals);
+  kNormals(ctx, NormalImage::make(input, std::move(normals)));
 }
 
 }  // namespace facet::normals

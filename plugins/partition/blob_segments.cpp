@@ -9,9 +9,6 @@
 namespace facet::partition {
 
 void check_partition_inputs(const cv::Mat& blobs, const cv::Mat& patches, const cv::Mat& points) {
-  require_type(blobs, CV_32SC1, "blobs");
-  require_type(patches, CV_32SC1, "patches");
-  require_type(points, CV_32FC3, "points");
   require_same_size(blobs, "blobs", patches, "patches");
   require_same_size(blobs, "blobs", points, "points");
 }

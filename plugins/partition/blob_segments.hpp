@@ -27,7 +27,8 @@ struct BlobRange {
   std::int32_t end = 0;
 };
 
-// Throws StageError unless blobs and patches are CV_32SC1 and points CV_32FC3 of one size.
+// Throws StageError unless blobs, patches and points are of one size (their types are their
+// packets' promise).
 void check_partition_inputs(const cv::Mat& blobs, const cv::Mat& patches, const cv::Mat& points);
 
 class BlobSegments {

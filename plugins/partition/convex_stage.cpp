@@ -69,29 +69,21 @@ void PartitionConvex::process(ProcessContext& ctx) {
   const auto& patches = kPatches(ctx);
   const auto& adjacency = kAdjacency(ctx);
   const auto& points = kPoints(ctx);
-  LabelImage objects;
-  static_cast<FrameHeader&>(objects) = blobs;
-  if (blobs.labels.empty()) {
-    ctx.metric("objects", 0);
-    ctx.metric("merges", 0);
-    kObjects(ctx, std::move(objects));
-    return;
-  }
   check_partition_inputs(blobs.labels, patches.labels, points.points);
   segments_.build(blobs.labels, patches.labels, points.points);
   neighbours_.build(adjacency, segments_.max_patch);
-  objects.labels = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
-  auto* labels = objects.labels.ptr<std::int32_t>();
+  cv::Mat objects = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
+  auto* labels = objects.ptr<std::int32_t>();
   merger_.reset_counters();
   std::int32_t next_id = 1;
   for (const BlobRange& blob : segments_.blobs) {
     next_id += merger_.merge(segments_, blob, neighbours_, labels, next_id);
   }
-  fill_blob_gaps(objects.labels, blobs.labels, next_id);
-  objects.count = relabel_in_raster_order(objects.labels);
-  ctx.metric("objects", objects.count);
+  fill_blob_gaps(objects, blobs.labels, next_id);
+  const std::int32_t count = relabel_in_raster_order(objects);
+  ctx.metric("objects", count);
   ctx.metric("merges", static_cast<double>(merger_.merges()));
-  kObjects(ctx, std::move(objects));
+  kObjects(ctx, LabelImage::make(blobs, std::move(objects), count));
 }
 
 }  // namespace facet::partition

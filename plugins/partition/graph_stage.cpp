@@ -291,28 +291,12 @@ void PartitionGraph::process(ProcessContext& ctx) {
   const auto& patches = kPatches(ctx);
   const auto& adjacency = kAdjacency(ctx);
   const auto& points = kPoints(ctx);
-  LabelImage objects;
-  static_cast<FrameHeader&>(objects) = blobs;
-  auto report = [&](std::int64_t convex, std::int64_t coplanar, std::int64_t curvature) {
-    ctx.metric("objects", objects.count);
-    ctx.metric("nodes", static_cast<double>(graph_.nodes.size()));
-    ctx.metric("convex_edges", static_cast<double>(convex));
-    ctx.metric("coplanar_edges", static_cast<double>(coplanar));
-    ctx.metric("curvature_edges", static_cast<double>(curvature));
-    ctx.metric("cuts", static_cast<double>(cut_.cuts()));
-  };
   graph_.nodes.clear();
-  if (blobs.labels.empty()) {
-    report(0, 0, 0);
-    kObjects(ctx, std::move(objects));
-    return;
-  }
   check_partition_inputs(blobs.labels, patches.labels, points.points);
-  // The gap lines read the images as flat arrays.
-  const cv::Mat patch_image =
-      patches.labels.isContinuous() ? patches.labels : patches.labels.clone();
-  const cv::Mat point_image = points.points.isContinuous() ? points.points : points.points.clone();
-  const cv::Mat blob_image = blobs.labels.isContinuous() ? blobs.labels : blobs.labels.clone();
+  // The gap lines read the images as flat arrays, which packet images are (facet/types/images.hpp).
+  const cv::Mat& patch_image = patches.labels;
+  const cv::Mat& point_image = points.points;
+  const cv::Mat& blob_image = blobs.labels;
   segments_.build(blobs.labels, patch_image, point_image);
   neighbours_.build(adjacency, segments_.max_patch);
   graph_.build(segments_, blobs.labels.cols, rule_.nodes);
@@ -336,8 +320,8 @@ void PartitionGraph::process(ProcessContext& ctx) {
 
   const auto node_count = static_cast<std::int32_t>(graph_.nodes.size());
   const std::vector<std::int32_t>& group = cut_.groups(node_count, edges_, rule_.cut);
-  objects.labels = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
-  auto* labels = objects.labels.ptr<std::int32_t>();
+  cv::Mat objects = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
+  auto* labels = objects.ptr<std::int32_t>();
   // The cores need each claimed pixel's node and the planar nodes' planes (a core that continues
   // one of those faces is that face).
   const bool cores = core_rule_.radius_px > 0.0;
@@ -363,18 +347,23 @@ void PartitionGraph::process(ProcessContext& ctx) {
     }
   }
   if (cores) {
-    next_id = claim_unclaimed_cores(objects.labels, blob_image, point_image, points.camera.fx,
+    next_id = claim_unclaimed_cores(objects, blob_image, point_image, points.camera.fx,
                                     ClaimedFaces{&node_of_pixel_, &face_planes_}, core_rule_,
                                     core_buffers_, next_id);
   }
-  fill_blob_gaps(objects.labels, blobs.labels, next_id);
-  objects.count = relabel_in_raster_order(objects.labels);
-  report(static_cast<std::int64_t>(convex_count), static_cast<std::int64_t>(coplanar_count),
-         static_cast<std::int64_t>(curvature_count));
+  fill_blob_gaps(objects, blobs.labels, next_id);
+  const std::int32_t count = relabel_in_raster_order(objects);
+  LabelImage object_image = LabelImage::make(blobs, std::move(objects), count);
+  ctx.metric("objects", count);
+  ctx.metric("nodes", static_cast<double>(graph_.nodes.size()));
+  ctx.metric("convex_edges", static_cast<double>(convex_count));
+  ctx.metric("coplanar_edges", static_cast<double>(coplanar_count));
+  ctx.metric("curvature_edges", static_cast<double>(curvature_count));
+  ctx.metric("cuts", static_cast<double>(cut_.cuts()));
   if (emit_graph_) {
-    kGraph(ctx, make_patch_graph(objects, graph_, edges_, group));
+    kGraph(ctx, make_patch_graph(object_image, graph_, edges_, group));
   }
-  kObjects(ctx, std::move(objects));
+  kObjects(ctx, std::move(object_image));
 }
 
 }  // namespace facet::partition

@@ -6,8 +6,7 @@ namespace facet::partition {
 
 PatchGraph make_patch_graph(const LabelImage& objects, const GraphNodes& graph,
                             std::span<const GraphEdge> edges, std::span<const std::int32_t> group) {
-  PatchGraph out;
-  static_cast<FrameHeader&>(out) = objects;
+  auto out = of_frame<PatchGraph>(objects);
   const auto* labels = objects.labels.ptr<std::int32_t>();
   for (const GraphNode& node : graph.nodes) {
     PatchGraph::Node entry;

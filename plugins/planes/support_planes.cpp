@@ -396,11 +396,9 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
 void SupportPlaneStage::process(ProcessContext& ctx) {
   const LabelImage& patches = kPatchesIn(ctx);
   const PointImage& points = kPoints(ctx);
-  require_type(patches.labels, CV_32SC1, "patches");
-  require_type(points.points, CV_32FC3, "points");
   require_same_size(patches.labels, "patches", points.points, "points");
-  const cv::Mat labels = patches.labels.isContinuous() ? patches.labels : patches.labels.clone();
-  const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
+  const cv::Mat& labels = patches.labels;
+  const cv::Mat& xyz = points.points;
 
   // Candidates and their planes; the generator restarts every frame, so a frame's result does
   // not depend on the frames before it (and clones agree).
@@ -431,18 +429,16 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const AcceptedPlanes accepted =
       accepted_planes(candidates, table, evidence, up, support_rule_.min_cos_horizontal);
 
-  SupportPlanes planes;
-  static_cast<FrameHeader&>(planes) = points;
+  auto planes = of_frame<SupportPlanes>(points);
   planes.up = up.cast<double>();
-  LabelImage plane_labels;
-  static_cast<FrameHeader&>(plane_labels) = points;
+  cv::Mat plane_labels;
   // What is left for objects: patches minus plane points, minus segments too small to matter.
-  LabelImage remaining;
-  static_cast<FrameHeader&>(remaining) = patches;
+  cv::Mat remaining_labels;
   const PlaneAssignment assignment =
       assign_to_planes(labels, patches.count, xyz, accepted.models, accepted.roles, accepted.table,
-                       assignment_rule_, plane_labels.labels, remaining.labels);
-  remaining.count = split_and_drop_left_patches(remaining.labels, patches.count, assignment, xyz);
+                       assignment_rule_, plane_labels, remaining_labels);
+  const std::int32_t remaining_count =
+      split_and_drop_left_patches(remaining_labels, patches.count, assignment, xyz);
 
   for (std::size_t c = 0; c < accepted.models.size(); ++c) {
     Plane plane;
@@ -462,7 +458,7 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
       table_ids[c + 1] = accepted.roles[c] == PlaneRole::table;
     planes.table_id = accepted.table + 1;
     planes.table_outline_m = table_outline(
-        plane_labels.labels, labels, table_patches(assignment, accepted.roles), xyz, table_ids,
+        plane_labels, labels, table_patches(assignment, accepted.roles), xyz, table_ids,
         accepted.models[static_cast<std::size_t>(accepted.table)], up, kOutlineStridePx);
   }
 
@@ -475,11 +471,11 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   ctx.metric("plane_ratio", assignment.valid_px > 0 ? static_cast<double>(assignment.plane_px) /
                                                           static_cast<double>(assignment.valid_px)
                                                     : 0.0);
-  plane_labels.count = static_cast<std::int32_t>(planes.planes.size());
+  const auto plane_count = static_cast<std::int32_t>(planes.planes.size());
   kPlanes(ctx, std::move(planes));
-  kPlaneLabels(ctx, std::move(plane_labels));
-  PatchAdjacency adjacency = algo::find_patch_contacts(remaining.labels, remaining.count);
-  static_cast<FrameHeader&>(adjacency) = patches;
+  kPlaneLabels(ctx, LabelImage::make(points, std::move(plane_labels), plane_count));
+  LabelImage remaining = LabelImage::make(patches, std::move(remaining_labels), remaining_count);
+  PatchAdjacency adjacency = algo::find_patch_contacts(remaining);
   kPatchesOut(ctx, std::move(remaining));
   kAdjacency(ctx, std::move(adjacency));
 }

@@ -194,14 +194,15 @@ void SubscribeStage::process(ProcessContext& ctx) {
                      "' says " + std::to_string(frame->camera.width) + "x" +
                      std::to_string(frame->camera.height));
   }
-  DepthImage depth;
-  depth.depth =
-      output_mm_ && received.type() == CV_32FC1 ? metres_to_millimetres(received) : received;
-  depth.camera = frame->camera;
-  depth.frame.index = delivered_;
-  depth.frame.timestamp_ns = frame->image.stamp_ns;
-  depth.frame.stem = frame_stem(delivered_);
-  depth.frame.camera_frame_id = std::move(frame->image.frame_id);
+  FrameHeader header;
+  header.camera = frame->camera;
+  header.frame.index = delivered_;
+  header.frame.timestamp_ns = frame->image.stamp_ns;
+  header.frame.stem = frame_stem(delivered_);
+  header.frame.camera_frame_id = std::move(frame->image.frame_id);
+  DepthImage depth = DepthImage::make(header, output_mm_ && received.type() == CV_32FC1
+                                                  ? metres_to_millimetres(received)
+                                                  : received);
   ++delivered_;
   ctx.metric("latency_ms",
              static_cast<double>(frame->image.received_ns - frame->image.stamp_ns) * 1e-6);

@@ -9,8 +9,6 @@
 namespace facet::shape {
 
 std::vector<ObjectPoints> gather_object_points(const cv::Mat& labels, const cv::Mat& points) {
-  require_type(labels, CV_32SC1, "objects");
-  require_type(points, CV_32FC3, "points");
   require_same_size(labels, "objects", points, "points");
 
   // Ids are dense (1..N) in practice, so a table indexed by id is cheaper than a map.

@@ -29,8 +29,7 @@ void PcaBoxStage::process(ProcessContext& ctx) {
   const SupportPlanes* planes = kObjectStage.planes(ctx);
   const auto start = std::chrono::steady_clock::now();
 
-  ObjectList list;
-  static_cast<FrameHeader&>(list) = static_cast<const FrameHeader&>(labels);
+  auto list = of_frame<ObjectList>(labels);
   double residual_sum_m = 0.0;
   for (ObjectGeometry& geometry :
        describe_objects(labels, points, planes, support_tolerance_m_, support_max_gap_m_)) {

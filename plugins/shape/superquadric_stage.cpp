@@ -129,8 +129,7 @@ void SuperquadricStage::process(ProcessContext& ctx) {
   const SupportPlanes* planes = kObjectStage.planes(ctx);
   const auto start = std::chrono::steady_clock::now();
 
-  ObjectList list;
-  static_cast<FrameHeader&>(list) = static_cast<const FrameHeader&>(labels);
+  auto list = of_frame<ObjectList>(labels);
   std::vector<ObjectGeometry> geometries =
       describe_objects(labels, points, planes, support_tolerance_m_, support_max_gap_m_);
   // Objects are fitted independently (each with its own seed), one or more per worker.

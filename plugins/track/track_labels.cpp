@@ -4,7 +4,6 @@
 #include <string>
 
 #include "facet/contract.hpp"
-#include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
 
 namespace facet::track {
@@ -61,17 +60,14 @@ TrackLabels::TrackLabels(const Params& params) : tracker_(options_from(params)) 
 
 void TrackLabels::process(ProcessContext& ctx) {
   const LabelImage& input = kLabelsIn(ctx);
-  require_type(input.labels, CV_32SC1, "labels");
   const std::int32_t largest_before = tracker_.largest_id();
-  LabelImage tracked;
-  static_cast<FrameHeader&>(tracked) = input;
+  cv::Mat tracked_labels;
   try {
-    tracked.labels =
-        tracker_.update(input.labels.isContinuous() ? input.labels : input.labels.clone());
+    tracked_labels = tracker_.update(input.labels);
   } catch (const std::invalid_argument& error) {
     throw StageError(std::string("input 'labels': ") + error.what());
   }
-  tracked.count = tracker_.largest_id();
+  LabelImage tracked = LabelImage::make(input, std::move(tracked_labels), tracker_.largest_id());
   double segments = 0.0;
   {
     std::vector<bool> seen(static_cast<std::size_t>(tracked.count) + 1, false);

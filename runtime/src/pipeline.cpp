@@ -286,6 +286,10 @@ class Pipeline::Impl {
         throw std::invalid_argument("graph input " + in_quotes(name) + " takes " + port->type_key +
                                     ", got " + std::string(packet.type_key()));
       }
+      if (std::string error = packet.format_error(); !error.empty()) {
+        throw std::invalid_argument("graph input " + in_quotes(name) + " (" + port->type_key +
+                                    "): " + error);
+      }
     }
     for (const auto& port : graph_.inputs) {
       if (inputs.find(port.name) == inputs.end()) {

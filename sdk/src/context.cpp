@@ -46,6 +46,9 @@ void ProcessContext::output_packet(std::string_view port, Packet packet) {
                            std::string(packet.type_key()) + " to output '" + std::string(port) +
                            "', declared as " + expected);
   }
+  if (std::string error = packet.format_error(); !error.empty()) {
+    throw StageError("output '" + std::string(port) + "' (" + expected + "): " + error);
+  }
   outputs_[i] = std::move(packet);
 }
 

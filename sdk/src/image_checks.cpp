@@ -14,13 +14,6 @@ std::string size_text(const cv::Mat& image) {
 
 }  // namespace
 
-void require_type(const cv::Mat& image, int type, std::string_view port) {
-  if (image.type() == type) return;
-  throw StageError(
-      "input '" + std::string(port) + "' must be " + cv::typeToString(type) + ", got " +
-      (image.empty() ? std::string("an empty image") : cv::typeToString(image.type())));
-}
-
 void require_same_size(const cv::Mat& a, std::string_view port_a, const cv::Mat& b,
                        std::string_view port_b) {
   if (a.size() == b.size()) return;

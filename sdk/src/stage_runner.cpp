@@ -37,6 +37,11 @@ void StageRunnerBase::create() {
 void StageRunnerBase::set_input(std::string_view port, Packet packet) {
   for (std::size_t i = 0; i < spec_.inputs().size(); ++i) {
     if (spec_.inputs()[i].name == port) {
+      // As in a graph, where every output is checked before a stage reads it (ProcessContext).
+      if (std::string error = packet.format_error(); !error.empty()) {
+        throw std::invalid_argument("input '" + std::string(port) + "' (" +
+                                    std::string(packet.type_key()) + "): " + error);
+      }
       pending_inputs_[i] = std::move(packet);
       return;
     }

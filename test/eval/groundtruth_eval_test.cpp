@@ -14,12 +14,11 @@ namespace {
 using facet::testing::StageRunner;
 
 LabelImage labels(std::initializer_list<int> column_ids) {
-  LabelImage image;
-  image.labels = cv::Mat(3, static_cast<int>(column_ids.size()), CV_32SC1);
+  cv::Mat ids(3, static_cast<int>(column_ids.size()), CV_32SC1);
   int x = 0;
   for (const int id : column_ids)
-    image.labels.col(x++).setTo(id);
-  return image;
+    ids.col(x++).setTo(id);
+  return LabelImage::counted(FrameHeader{}, ids);
 }
 
 std::map<std::string, double> metrics_of(const StageRunner<GroundTruthEval>& runner) {
@@ -55,7 +54,7 @@ TEST(GroundTruthEval, FrameWithoutTruthIsSkippedNotAnError) {
   EXPECT_EQ(metrics.at("scored"), 0.0);
   EXPECT_EQ(metrics.count("f"), 0u);
   // An empty truth packet (io.frames without a label file) is the same.
-  runner.set_input("truth", Packet::make(LabelImage{}));
+  runner.set_input("truth", Packet());
   runner.run();
   metrics = metrics_of(runner);
   EXPECT_EQ(metrics.at("scored"), 0.0);

@@ -35,9 +35,7 @@ std::map<std::string, double> run_frame(StageRunner<NormalStabilityEval>& runner
   image.normals = normals;
   runner.set_input("normals", Packet::make(image));
   if (!planes.empty()) {
-    LabelImage labels;
-    labels.labels = planes;
-    runner.set_input("plane_labels", Packet::make(labels));
+    runner.set_input("plane_labels", Packet::make(LabelImage::counted(FrameHeader{}, planes)));
   }
   runner.run();
   std::map<std::string, double> metrics;

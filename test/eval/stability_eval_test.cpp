@@ -38,9 +38,7 @@ cv::Mat wall_points() {
 
 std::map<std::string, double> run_frame(StageRunner<StabilityEval>& runner, const cv::Mat& labels,
                                         const cv::Mat& points = {}) {
-  LabelImage image;
-  image.labels = labels;
-  runner.set_input("labels", Packet::make(image));
+  runner.set_input("labels", Packet::make(LabelImage::counted(FrameHeader{}, labels)));
   if (!points.empty()) {
     PointImage cloud;
     cloud.points = points;

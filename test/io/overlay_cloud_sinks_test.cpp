@@ -243,6 +243,7 @@ TEST(OverlaySink, DrawsTheEdgeMaskWhenConnectedAndAsked) {
   TempDir dir;
   const OverlayScene scene = overlay_scene("e");
   EdgeImage edges;
+  edges.score = cv::Mat(8, 12, CV_32FC1, cv::Scalar(1.0));
   edges.mask = cv::Mat(8, 12, CV_8UC1, cv::Scalar(0));
   edges.mask.at<std::uint8_t>(7, 5) = 255;
   edges.mask.at<std::uint8_t>(3, 2) = 255;  // inside segment 3
@@ -518,19 +519,28 @@ TEST(CloudSink, NoValidPointGivesAnEmptyButWellFormedFile) {
   EXPECT_FALSE(ply.trailing_bytes);
 }
 
-TEST(CloudSink, NegativeLabelsAndWrongTypesAreErrorsNamingTheFile) {
+// PLY labels are unsigned and points are CV_32FC3: what breaks the types' formats never reaches
+// the sink (a graph refuses it at the producer's output, a test at set_input).
+TEST(CloudSink, NegativeLabelsAndWrongTypesNeverReachIt) {
   TempDir dir;
   CloudRunner sink({{"dir", dir.path().string()}});
   CloudScene scene = cloud_scene("neg");
   scene.labels.labels.at<std::int32_t>(1, 1) = -4;
-  sink.set_input("points", Packet::make(scene.points));
-  sink.set_input("labels", Packet::make(scene.labels));
-  expect_stage_error([&] { sink.run(); }, {"neg.ply", "negative label -4"});
+  EXPECT_THROW(sink.set_input("labels", Packet::make(scene.labels)), std::invalid_argument);
 
   PointImage depth_like = with_frame(PointImage{}, "flat");
   depth_like.points = cv::Mat(3, 4, CV_32FC1, cv::Scalar(1.0));
-  sink.set_input("points", Packet::make(depth_like));
-  expect_stage_error([&] { sink.run(); }, {"flat.ply", "CV_32FC3"});
+  EXPECT_THROW(sink.set_input("points", Packet::make(depth_like)), std::invalid_argument);
+}
+
+TEST(CloudSink, LabelsOfAnotherSizeAreAnErrorNamingBothPorts) {
+  TempDir dir;
+  CloudRunner sink({{"dir", dir.path().string()}});
+  CloudScene scene = cloud_scene("small");
+  sink.set_input("points", Packet::make(scene.points));
+  scene.labels.labels = scene.labels.labels(cv::Rect(0, 0, 2, 2)).clone();
+  sink.set_input("labels", Packet::make(scene.labels));
+  expect_stage_error([&] { sink.run(); }, {"'points' (4x3)", "'labels' (2x2)"});
 }
 
 TEST(OverlayAndCloudSinks, AFileThatCannotBeWrittenIsAnErrorNamingIt) {

@@ -90,6 +90,8 @@ TEST(GrowBlobs, BlobsLyingInAPlaneBandAreRemoved) {
   const SceneRun run = run_scene(table_with_boxes());
   // Hand the table's pixels of one image region back to the blob stage as a patch of its own.
   LabelImage patches = run.planes.patches;
+  patches.labels = patches.labels.clone();
+  patches.count = 1000;
   int shred_px = 0;
   for (int v = 300; v < 320; ++v) {
     for (int u = 40; u < 120; ++u) {
@@ -227,13 +229,13 @@ TEST(SupportPlanes, EmptyFrameAndNoValidDepth) {
   EXPECT_FALSE(result.warnings.empty());
   EXPECT_EQ(run_blobs(result.patches, points, &result.planes).count, 0);
 
-  // A zero-size image is no error either.
+  // A zero-size image breaks the image types' format: it is refused before any stage sees it.
   PointImage none;
   none.points = cv::Mat(0, 0, CV_32FC3);
   LabelImage no_patches;
   no_patches.labels = cv::Mat(0, 0, CV_32SC1);
-  EXPECT_TRUE(run_planes(no_patches, none).planes.planes.empty());
-  EXPECT_EQ(run_blobs(no_patches, none).count, 0);
+  EXPECT_THROW(run_planes(no_patches, none), std::invalid_argument);
+  EXPECT_THROW(run_blobs(no_patches, none), std::invalid_argument);
 }
 
 TEST(SupportPlanes, NoTableLeavesTheObjects) {

@@ -119,6 +119,16 @@ TEST(PipelineErrors, BadInputsFromTheHostNameTheInput) {
   EXPECT_EQ(message_of({{"depth", Packet::make(LabelImage{})}}),
             "graph input 'depth' takes facet.DepthImage/1, got facet.LabelImage/1");
   EXPECT_EQ(message_of({{"depth", Packet()}}), "graph input 'depth' is empty");
+  DepthImage eight_bit = bundled_mosd_frame(kMosd, "learn0");
+  eight_bit.depth.convertTo(eight_bit.depth, CV_8UC1);  // neither millimetres nor metres
+  EXPECT_EQ(message_of({{"depth", Packet::make(eight_bit)}}),
+            "graph input 'depth' (facet.DepthImage/1): depth is CV_8UC1, must be CV_16UC1 (mm) "
+            "or CV_32FC1 (m)");
+  DepthImage cropped = bundled_mosd_frame(kMosd, "learn0");
+  cropped.depth = cropped.depth(cv::Rect(0, 0, 320, 240)).clone();  // intrinsics still 640x480
+  EXPECT_EQ(message_of({{"depth", Packet::make(cropped)}}),
+            "graph input 'depth' (facet.DepthImage/1): depth is 320x240, its camera's "
+            "intrinsics are 640x480");
   // The pipeline still works after refusing bad inputs.
   const auto result = pipeline.process({{"depth", depth}});
   EXPECT_NE(result.outputs.at("points").get_if<PointImage>(), nullptr);
@@ -128,13 +138,15 @@ TEST(PipelineErrors, AStageFailingOnAFrameIsAProcessErrorNamingTheNode) {
   Pipeline pipeline = Pipeline::from_text(
       graph_with("inputs: {depth: source.depth}\noutputs: {points: points.points}\n"), kGraphName);
   DepthImage depth = bundled_mosd_frame(kMosd, "learn0");
-  depth.depth.convertTo(depth.depth, CV_8UC1);  // neither millimetres nor metres
+  depth.camera = {};  // a well-formed image, but convert.points cannot project it
   try {
     pipeline.process({{"depth", Packet::make(depth)}});
-    FAIL() << "an 8-bit depth image was accepted";
+    FAIL() << "a depth image without intrinsics was projected";
   } catch (const ProcessError& error) {
-    EXPECT_NE(std::string(error.what()).find("node 'median' (filter.median), frame 0"),
+    EXPECT_NE(std::string(error.what()).find("node 'points' (convert.points), frame 0"),
               std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("carries no camera intrinsics"), std::string::npos)
         << error.what();
   }
 }

@@ -77,10 +77,11 @@ class ContractStage final : public Stage {
 
   void process(ProcessContext& ctx) override {
     kForwarded.forward(ctx, kDepth.packet(ctx));
-    LabelImage labels;
-    static_cast<FrameHeader&>(labels) = kDepth(ctx);
+    const DepthImage& depth = kDepth(ctx);
     const LabelImage* hint = kHint(ctx);
-    labels.count = hint != nullptr ? hint->count : size_;
+    const int count = hint != nullptr ? hint->count : size_;
+    LabelImage labels =
+        LabelImage::make(depth, cv::Mat::zeros(depth.depth.size(), CV_32SC1), count);
     ctx.metric("exact", mode_ == Mode::exact ? 1.0 : 0.0);
     ctx.metric("threshold", threshold_);
     ctx.metric("range_width", range_.hi - range_.lo);
@@ -145,6 +146,7 @@ TEST(Contract, DescriptorsReadValuesAndPorts) {
   EXPECT_EQ(runner.output<LabelImage>("labels").count, 3);  // no hint: the window size
 
   LabelImage hint;
+  hint.labels = cv::Mat::zeros(2, 3, CV_32SC1);
   hint.count = 7;
   runner.set_input("hint", Packet::make(hint));
   runner.run();

@@ -18,15 +18,6 @@ std::string message_of(const std::function<void()>& call) {
   return "";
 }
 
-TEST(ImageChecks, TypeMismatchNamesPortAndBothTypes) {
-  const cv::Mat depth(2, 3, CV_16UC1);
-  EXPECT_NO_THROW(facet::require_type(depth, CV_16UC1, "depth"));
-  EXPECT_EQ(message_of([&] { facet::require_type(depth, CV_32FC3, "points"); }),
-            "input 'points' must be CV_32FC3, got CV_16UC1");
-  EXPECT_EQ(message_of([&] { facet::require_type(cv::Mat(), CV_32SC1, "patches"); }),
-            "input 'patches' must be CV_32SC1, got an empty image");
-}
-
 TEST(ImageChecks, SizeMismatchNamesBothPortsAndSizes) {
   const cv::Mat a(480, 640, CV_32SC1);
   const cv::Mat b(240, 320, CV_32FC3);

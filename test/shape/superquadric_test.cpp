@@ -153,6 +153,7 @@ TEST(Superquadric, EmptyTinyAndInvalidObjectsDoNotCrash) {
   // Object 2: three pixels. Object 3: only NaN points.
   TabletopScene mixed = scene;
   mixed.objects.labels = scene.objects.labels.clone();
+  mixed.objects.count = 3;
   mixed.points.points = scene.points.points.clone();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int u = 0; u < 3; ++u)
@@ -185,6 +186,7 @@ TEST(Superquadric, ReportsWhyItsFitsEnded) {
   // Object 2: three pixels, too few for a fit, so it counts under no stop reason.
   TabletopScene two = scene;
   two.objects.labels = scene.objects.labels.clone();
+  two.objects.count = 2;
   for (int u = 0; u < 3; ++u)
     two.objects.labels.at<int>(5, u) = 2;
   const auto run = [&](std::int64_t max_iterations) {

@@ -103,9 +103,8 @@ TEST(LabelTracker, DeterministicForTheSameInput) {
 
 TEST(LabelTracker, StageOutputsTrackIdsAndRejectsSizeChanges) {
   testing::StageRunner<TrackLabels> runner;
-  LabelImage input;
-  input.labels = frame({{7, {2, 2, 10, 10}}});
-  runner.set_input("labels", Packet::make(input));
+  runner.set_input("labels",
+                   Packet::make(LabelImage::counted(FrameHeader{}, frame({{7, {2, 2, 10, 10}}}))));
   runner.run();
   const LabelImage& out = runner.output<LabelImage>("labels");
   EXPECT_EQ(id_at(out.labels, {2, 2, 10, 10}), 1);

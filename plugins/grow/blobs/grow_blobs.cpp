@@ -187,16 +187,13 @@ GrowBlobs::GrowBlobs(const Params& params)
 void GrowBlobs::process(ProcessContext& ctx) {
   const LabelImage& patches = kPatches(ctx);
   const PointImage& points = kPoints(ctx);
-  require_type(patches.labels, CV_32SC1, "patches");
-  require_type(points.points, CV_32FC3, "points");
   require_same_size(patches.labels, "patches", points.points, "points");
-  const cv::Mat xyz = points.points.isContinuous() ? points.points : points.points.clone();
+  const cv::Mat& xyz = points.points;
 
   // Taking part: a patch pixel with a finite point; with edge_pixels, afterwards, the pixels of
   // no patch and no plane (edge_attachment.hpp says why not at once).
   const LabelImage* plane_labels = edge_pixels_ ? kPlaneLabels(ctx) : nullptr;
   if (plane_labels != nullptr) {
-    require_type(plane_labels->labels, CV_32SC1, "plane_labels");
     require_same_size(plane_labels->labels, "plane_labels", points.points, "points");
   }
   cv::Mat mask(patches.labels.size(), CV_8UC1);
@@ -234,10 +231,7 @@ void GrowBlobs::process(ProcessContext& ctx) {
   if (planes != nullptr) dropped = drop_background_blobs(regions, xyz, *planes, rule_);
   const std::int32_t outside = workspace_ ? drop_blobs_outside(regions, xyz, *workspace_) : 0;
 
-  LabelImage blobs;
-  static_cast<FrameHeader&>(blobs) = points;
-  blobs.labels = std::move(regions.labels);
-  blobs.count = regions.count;
+  LabelImage blobs = LabelImage::make(points, std::move(regions.labels), regions.count);
   ctx.metric("blobs", blobs.count);
   ctx.metric("blobs_behind_planes", dropped.behind);
   ctx.metric("blobs_on_planes", dropped.on_plane);

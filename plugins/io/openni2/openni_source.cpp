@@ -428,14 +428,15 @@ void OpenNi2Source::process(ProcessContext& ctx) {
                      const_cast<void*>(frame.getData()),
                      static_cast<std::size_t>(frame.getStrideInBytes()));
 
-  DepthImage depth;
-  depth.frame.index = ctx.frame_index();
-  depth.frame.timestamp_ns = static_cast<std::int64_t>(frame.getTimestamp()) * 1000;
-  depth.frame.stem = frame_stem(depth.frame.index);
-  depth.camera = camera_;
-  depth.camera.width = frame.getWidth();
-  depth.camera.height = frame.getHeight();
-  depth.depth = view.clone();  // the frame's buffer goes back to OpenNI2 with `frame`
+  FrameHeader header;
+  header.frame.index = ctx.frame_index();
+  header.frame.timestamp_ns = static_cast<std::int64_t>(frame.getTimestamp()) * 1000;
+  header.frame.stem = frame_stem(header.frame.index);
+  header.camera = camera_;
+  header.camera.width = frame.getWidth();
+  header.camera.height = frame.getHeight();
+  // A copy: the frame's buffer goes back to OpenNI2 with `frame`.
+  DepthImage depth = DepthImage::make(header, view.clone());
 
   ctx.metric("dropped_frames", static_cast<double>(drops_.passed_on(frame.getFrameIndex())));
   if (auto warning = drops_.warning()) ctx.warn(what() + ": " + *warning);

@@ -258,11 +258,10 @@ void PcdSource::process(ProcessContext& ctx) {
     const double pixels = static_cast<double>(images.depth.total());
     ctx.metric("valid_ratio", static_cast<double>(cv::countNonZero(images.depth)) / pixels);
     if (!images.labels.empty()) {
-      LabelImage labels{header, std::move(images.labels), 0};
-      labels.count = apply_label_scheme(labels.labels, scheme_);
-      kLabels(ctx, std::move(labels));
+      const std::int32_t count = apply_label_scheme(images.labels, scheme_);
+      kLabels(ctx, LabelImage::make(header, std::move(images.labels), count));
     }
-    kDepth(ctx, DepthImage{header, std::move(images.depth)});
+    kDepth(ctx, DepthImage::make(header, std::move(images.depth)));
     playback_.emitted();
     return;
   }

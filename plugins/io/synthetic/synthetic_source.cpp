@@ -471,8 +471,8 @@ void SyntheticSource::process(ProcessContext& ctx) {
   ctx.metric("camera_tilt_deg", rendered.view.camera_tilt_deg);
   ctx.metric("wall_from_camera_m", rendered.view.wall_from_camera_m);
   ctx.metric("table_edge_in_view", rendered.view.table_edge_in_view ? 1 : 0);
-  kDepth(ctx, DepthImage{header, depth_mm});
-  kLabels(ctx, LabelImage{header, labels, rendered.scene.object_count});
+  kDepth(ctx, DepthImage::make(header, depth_mm));
+  kLabels(ctx, LabelImage::make(header, labels, rendered.scene.object_count));
   ++emitted_;
 }
 

@@ -109,7 +109,6 @@ IntegralStage::~IntegralStage() = default;
 
 void IntegralStage::process(ProcessContext& ctx) {
   const DepthImage& input = kDepth(ctx);
-  if (input.depth.empty()) throw StageError("input depth image is empty");
   if (!(input.camera.fx > 0.0 && input.camera.fy > 0.0)) {
     throw StageError("the depth image carries no camera intrinsics (fx, fy)");
   }
@@ -132,11 +131,9 @@ void IntegralStage::process(ProcessContext& ctx) {
   estimator.setInputCloud(pcl_->cloud);
   estimator.compute(pcl_->normals);
 
-  NormalImage output;
-  static_cast<FrameHeader&>(output) = input;
-  output.normals.create(input.depth.rows, input.depth.cols, CV_32FC3);
+  cv::Mat normals(input.depth.rows, input.depth.cols, CV_32FC3);
   for (int v = 0; v < input.depth.rows; ++v) {
-    auto* out = output.normals.ptr<float>(v);
+    auto* out = normals.ptr<float>(v);
     for (int u = 0; u < input.depth.cols; ++u) {
       const auto& normal = pcl_->normals(static_cast<std::size_t>(u), static_cast<std::size_t>(v));
       out[3 * u + 0] = normal.normal_x;
@@ -144,7 +141,7 @@ void IntegralStage::process(ProcessContext& ctx) {
       out[3 * u + 2] = normal.normal_z;
     }
   }
-  kNormals(ctx, std::move(output));
+  kNormals(ctx, NormalImage::make(input, std::move(normals)));
 }
 
 }  // namespace facet::normals

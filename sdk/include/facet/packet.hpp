@@ -44,7 +44,13 @@ class Packet {
   static Packet share(std::shared_ptr<const T> value) {
     const FrameHeader* header = nullptr;
     if constexpr (std::derived_from<T, FrameHeader>) header = value.get();
-    return Packet(std::move(value), facet::type_key<T>(), header);
+    FormatCheck check = nullptr;
+    if constexpr (requires(const T& v) {
+                    { v.format_error() } -> std::convertible_to<std::string>;
+                  }) {
+      check = [](const void* payload) { return static_cast<const T*>(payload)->format_error(); };
+    }
+    return Packet(std::move(value), facet::type_key<T>(), header, check);
   }
 
   bool empty() const noexcept { return data_ == nullptr; }
@@ -72,14 +78,26 @@ class Packet {
   // executor names a frame's files without knowing any image type.
   const FrameHeader* header() const noexcept { return header_; }
 
+  // What is wrong with the payload's format, or "" when it keeps it (or is empty, or of a type
+  // that promises none). A type promises a format with a member `std::string format_error()
+  // const`, as the image types do (facet/types/images.hpp); the executor checks every output
+  // with it, so that a consumer can rely on the format of what it reads.
+  std::string format_error() const {
+    return check_ != nullptr ? check_(data_.get()) : std::string();
+  }
+
  private:
-  Packet(std::shared_ptr<const void> data, std::string_view key, const FrameHeader* header)
-      : data_(std::move(data)), key_(key), header_(header) {}
+  using FormatCheck = std::string (*)(const void* payload);
+
+  Packet(std::shared_ptr<const void> data, std::string_view key, const FrameHeader* header,
+         FormatCheck check)
+      : data_(std::move(data)), key_(key), header_(header), check_(check) {}
 
   std::shared_ptr<const void> data_;
   // Points at a string literal with static storage (see FACET_TYPE_KEY); compared by content.
   std::string_view key_;
   const FrameHeader* header_ = nullptr;  // into *data_, which it shares the lifetime of
+  FormatCheck check_ = nullptr;          // of the payload's type; null when it promises no format
 };
 
 }  // namespace facet

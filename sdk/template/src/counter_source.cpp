@@ -45,23 +45,26 @@ void CounterSource::process(facet::ProcessContext& ctx) {
     ctx.end_of_stream();  // a source says when it is done; outputs set now would be dropped
     return;
   }
-  facet::DepthImage image;
-  image.depth.create(height_, width_, CV_16UC1);
+  cv::Mat depth_mm(height_, width_, CV_16UC1);
   for (int u = 0; u < width_; ++u) {
     const double t = static_cast<double>(u) / (width_ - 1);
-    image.depth.col(u).setTo(cv::Scalar(near_mm_ + t * (far_mm_ - near_mm_)));
+    depth_mm.col(u).setTo(cv::Scalar(near_mm_ + t * (far_mm_ - near_mm_)));
   }
-  // Every image carries its frame and camera; downstream stages rely on them.
-  image.frame.index = emitted_;
-  image.frame.timestamp_ns = emitted_ * 33'333'333;  // a nominal 30 Hz
-  image.frame.stem = "counter" + std::to_string(emitted_);
-  image.camera = {.fx = 1.0 * width_,
-                  .fy = 1.0 * width_,
-                  .cx = 0.5 * width_,
-                  .cy = 0.5 * height_,
-                  .width = width_,
-                  .height = height_};
-  kDepth(ctx, std::move(image));
+  // Every image carries its frame and camera; downstream stages rely on them. A stage that
+  // computes an image from an input passes the input as the header: Image::make(input, pixels).
+  facet::FrameHeader header;
+  header.frame.index = emitted_;
+  header.frame.timestamp_ns = emitted_ * 33'333'333;  // a nominal 30 Hz
+  header.frame.stem = "counter" + std::to_string(emitted_);
+  header.camera = {.fx = 1.0 * width_,
+                   .fy = 1.0 * width_,
+                   .cx = 0.5 * width_,
+                   .cy = 0.5 * height_,
+                   .width = width_,
+                   .height = height_};
+  // make() checks the format the type promises (CV_16UC1 or CV_32FC1, continuous, the camera's
+  // size) and throws std::invalid_argument saying what is wrong.
+  kDepth(ctx, facet::DepthImage::make(header, std::move(depth_mm)));
   ++emitted_;
 }
 

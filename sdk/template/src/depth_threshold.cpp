@@ -35,16 +35,16 @@ void DepthThreshold::process(facet::ProcessContext& ctx) {
     // StageError is for problems the user can fix; the executor adds node, stage and frame.
     throw facet::StageError("expects CV_16UC1 depth in millimetres");
   }
-  // Packets are immutable: copy the header, then write a new image rather than the input's.
-  facet::DepthImage output = input;
-  output.depth = input.depth.clone();
-  output.depth.setTo(0, input.depth > max_mm_);
+  // Packets are immutable: write a new image rather than the input's. make() gives it the
+  // input's frame and camera.
+  cv::Mat kept = input.depth.clone();
+  kept.setTo(0, input.depth > max_mm_);
 
   const int measured = cv::countNonZero(input.depth);
   if (measured > 0) {
-    ctx.metric("kept_ratio", static_cast<double>(cv::countNonZero(output.depth)) / measured);
+    ctx.metric("kept_ratio", static_cast<double>(cv::countNonZero(kept)) / measured);
   }
-  kKept(ctx, std::move(output));
+  kKept(ctx, facet::DepthImage::make(input, std::move(kept)));
 }
 
 }  // namespace facet_template

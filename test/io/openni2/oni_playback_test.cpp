@@ -164,6 +164,8 @@ TEST(OniPlayback, IoOniRefusesAFrameOfAnotherSizeNamingTheFile) {
   sink.run();
   DepthImage small = stream_frame(1);
   small.depth = cv::Mat(8, 8, CV_16UC1, cv::Scalar(900));
+  small.camera.width = 8;  // an 8x8 camera's frame: a well-formed image, but not this stream's
+  small.camera.height = 8;
   sink.set_input("depth", Packet::make(small));
   try {
     sink.run();

@@ -30,6 +30,7 @@ TEST(ViewWindow, OpensShowsFramesAndClosesUnderAnXServer) {
     LabelImage labels;
     labels.labels = cv::Mat::zeros(40, 60, CV_32SC1);
     labels.labels(cv::Rect(10, 10, 20, 20)).setTo(1);
+    labels.count = 1;
     runner.set_input("depth", Packet::make(depth));
     runner.set_input("labels", Packet::make(labels));
     for (int frame = 0; frame < 3; ++frame) {

@@ -2,6 +2,7 @@
 // What every image-like packet carries besides its pixels: which frame it belongs to and the
 // camera that saw it.
 
+#include <concepts>
 #include <cstdint>
 #include <string>
 
@@ -39,5 +40,16 @@ struct FrameHeader {
   FrameInfo frame;
   CameraIntrinsics camera;
 };
+
+// An empty T (a type derived from FrameHeader) that belongs to the frame of `input`: it carries
+// its frame and camera, as every output computed from `input` must.
+//   auto list = of_frame<ObjectList>(labels);
+// The image types have checked factories for the same (DepthImage::make, facet/types/images.hpp).
+template <std::derived_from<FrameHeader> T>
+T of_frame(const FrameHeader& input) {
+  T output{};
+  static_cast<FrameHeader&>(output) = input;
+  return output;
+}
 
 }  // namespace facet
