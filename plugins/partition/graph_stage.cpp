@@ -6,16 +6,13 @@
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
 #include "partition/object_labels.hpp"
+#include "partition/partition_ports.hpp"
 #include "partition/patch_graph.hpp"
 
 namespace facet::partition {
 namespace {
 
-const In<LabelImage> kBlobs{"blobs", "Object candidates, CV_32SC1 ids > 0; 0 = background."};
-const In<LabelImage> kPatches{"patches", "Surface patch ids, CV_32SC1; 0 = in no patch."};
 const In<PatchAdjacency> kAdjacency{"adjacency", "Which patches touch (from grow.surfaces)."};
-const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid; same size."};
-const Out<LabelImage> kObjects{"objects", "Object ids 1..count, CV_32SC1; 0 = background."};
 const Out<PatchGraph> kGraph{"graph",
                              "The graph for a person to look at (nodes, edges and the feature of "
                              "each, object of each node), e.g. for io.patch_graph; only with "
