@@ -142,6 +142,23 @@ TEST(PcdSource, GivenIntrinsicsAreUsedAsIs) {
   EXPECT_EQ(cv::countNonZero(out.depth == 800), 12);
 }
 
+TEST(PcdSource, HalfGivenOrDoublyGivenIntrinsicsAreRefused) {
+  TempDir dir;
+  save(dir / "a.pcd", flat_cloud(800.0F));
+  // One focal length without the other is refused when the stage is made, before any file.
+  expect_stage_error(
+      [&] {
+        Runner({{"path", (dir / "a.pcd").string()}, {"fy", 91.0}});
+      },
+      {"fx and fy"});
+  write_text(dir / "intrinsics.yaml", facet::test::intrinsics_yaml(4, 3));
+  Runner both({{"path", (dir / "a.pcd").string()},
+               {"intrinsics", (dir / "intrinsics.yaml").string()},
+               {"fx", 90.0},
+               {"fy", 91.0}});
+  expect_stage_error([&] { both.run(); }, {"intrinsics", "not both"});
+}
+
 TEST(PcdSource, FolderAndGlobInNaturalOrderWithTimestampsAndStems) {
   TempDir dir;
   for (int n : {10, 2, 1})

@@ -14,6 +14,7 @@
 
 #include "facet/contract.hpp"
 #include "facet/types/images.hpp"
+#include "io/given_intrinsics.hpp"
 #include "openni2/openni_runtime.hpp"
 
 namespace fs = std::filesystem;
@@ -71,12 +72,7 @@ const Param<double> kSpeed{"speed",
 const Param<bool> kLoop{
     "loop", false,
     "Recordings only: start again after the last frame instead of ending the stream."};
-const Param<double> kFx{
-    "fx", 0.0, "Focal length in x; 0 = from the field of view.", {.unit = "px", .min = 0.0}};
-const Param<double> kFy{
-    "fy", 0.0, "Focal length in y; 0 = from the field of view.", {.unit = "px", .min = 0.0}};
-const Param<double> kCx{"cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"}};
-const Param<double> kCy{"cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"}};
+const io::GivenIntrinsics kGivenIntrinsics{"from the field of view"};
 
 std::string pixel_format_name(openni::PixelFormat format) {
   switch (format) {
@@ -212,7 +208,7 @@ StageSpec OpenNi2Source::spec() {
       "OpenNI2.");
   return spec
       .declare(kDepth, kUri, kWidth, kHeight, kFps, kRegistration, kMirror, kPolicy, kTimeoutMs,
-               kSpeed, kLoop, kFx, kFy, kCx, kCy)
+               kSpeed, kLoop, kGivenIntrinsics)
       .concurrency(Concurrency::serial);
 }
 
@@ -223,20 +219,14 @@ OpenNi2Source::OpenNi2Source(const Params& params)
       policy_param_(kPolicy(params)),
       timeout_ms_(kTimeoutMs(params)),
       speed_(kSpeed(params)),
-      loop_(kLoop(params)) {
+      loop_(kLoop(params)),
+      given_(kGivenIntrinsics(params)) {
   request_.width_px = kWidth(params);
   request_.height_px = kHeight(params);
   request_.fps = kFps(params);
-  given_.fx = kFx(params);
-  given_.fy = kFy(params);
-  given_.cx = kCx(params);
-  given_.cy = kCy(params);
   if (speed_ != -1.0 && !(speed_ > 0.0)) {
     throw StageError("param 'speed' is " + std::to_string(speed_) +
                      ": give -1 (as fast as possible) or a multiple of the recorded rate > 0");
-  }
-  if ((given_.fx > 0.0) != (given_.fy > 0.0)) {
-    throw StageError("params fx and fy must both be set (> 0) when either is");
   }
 }
 

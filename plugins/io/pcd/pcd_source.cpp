@@ -8,6 +8,7 @@
 #include "facet/contract.hpp"
 #include "io/file_playback.hpp"
 #include "io/frame_listing.hpp"
+#include "io/given_intrinsics.hpp"
 #include "io/intrinsics_file.hpp"
 #include "io/natural_order.hpp"
 #include "pcd/pcd_file.hpp"
@@ -37,10 +38,7 @@ const Param<std::string> kIntrinsics{
     "Intrinsics file (keys fx, fy, cx, cy, width, height); empty = use fx, fy, cx, cy, "
     "or fit the intrinsics from each organized cloud when those are 0.",
     {.origin = "dataset format, see docs/data-formats.md"}};
-const Param<double> kFx{"fx", 0.0, "Focal length in x; 0 = not given.", {.unit = "px", .min = 0.0}};
-const Param<double> kFy{"fy", 0.0, "Focal length in y; 0 = not given.", {.unit = "px", .min = 0.0}};
-const Param<double> kCx{"cx", 0.0, "Principal point x (used when fx is given).", {.unit = "px"}};
-const Param<double> kCy{"cy", 0.0, "Principal point y (used when fx is given).", {.unit = "px"}};
+const io::GivenIntrinsics kGivenIntrinsics{"not given"};
 const Param<int> kWidth{
     "width",
     0,
@@ -151,7 +149,7 @@ StageSpec PcdSource::spec() {
       "a pixel) and refused without them. Ends the stream after the last file unless "
       "'loop' is set. Reports the metric valid_ratio (valid pixels / all).");
   return spec
-      .declare(kDepth, kLabels, kPath, kIntrinsics, kFx, kFy, kCx, kCy, kWidth, kHeight, kMaxFitRms,
+      .declare(kDepth, kLabels, kPath, kIntrinsics, kGivenIntrinsics, kWidth, kHeight, kMaxFitRms,
                kLabelScheme, kPlayback)
       .concurrency(Concurrency::serial);
 }
@@ -162,10 +160,7 @@ PcdSource::PcdSource(const Params& params)
       scheme_(kLabelScheme(params)),
       max_fit_rms_px_(kMaxFitRms(params)),
       playback_(kPlayback(params)) {
-  given_.fx = kFx(params);
-  given_.fy = kFy(params);
-  given_.cx = kCx(params);
-  given_.cy = kCy(params);
+  given_ = kGivenIntrinsics(params);
   given_.width = kWidth(params);
   given_.height = kHeight(params);
 }
@@ -175,9 +170,6 @@ void PcdSource::open(const OpenContext& /*ctx*/) {
   const bool focal_given = given_.fx > 0.0 || given_.fy > 0.0;
   if (!intrinsics_param_.empty() && focal_given) {
     throw StageError("set either param 'intrinsics' or params fx, fy, cx, cy, not both");
-  }
-  if (focal_given && !(given_.fx > 0.0 && given_.fy > 0.0)) {
-    throw StageError("params fx and fy must both be set (> 0) when either is");
   }
   have_camera_ = !intrinsics_param_.empty() || focal_given;
   camera_ = intrinsics_param_.empty() ? given_ : io::read_intrinsics(intrinsics_param_);
