@@ -28,20 +28,28 @@ struct Spans {
   }
 };
 
-std::optional<Span> sphere_span(const Vec3& o, const Vec3& d, const Vec3& centre, double radius) {
-  const Vec3 oc = o - centre;
-  const double a = d.dot(d);
-  const double b = 2.0 * oc.dot(d);
-  const double c = oc.dot(oc) - radius * radius;
+// The ray parameters between the roots of a t^2 + b t + c (a > 0), where the quadric that gives
+// those coefficients is negative: inside it. No span when the ray only touches or misses it.
+std::optional<Span> between_roots(double a, double b, double c) {
   const double discriminant = b * b - 4.0 * a * c;
   if (discriminant <= 0.0) return std::nullopt;
   const double root = std::sqrt(discriminant);
   Span span;
   span.enter = (-b - root) / (2.0 * a);
   span.exit = (-b + root) / (2.0 * a);
+  return span;
+}
+
+// Inside the sphere of `radius` about `centre`.
+std::optional<Span> sphere_span(const Vec3& o, const Vec3& d, const Vec3& centre, double radius) {
+  const Vec3 oc = o - centre;
+  std::optional<Span> inside =
+      between_roots(d.dot(d), 2.0 * oc.dot(d), oc.dot(oc) - radius * radius);
+  if (!inside) return std::nullopt;
+  Span& span = *inside;
   span.enter_normal = (oc + span.enter * d) / radius;
   span.exit_normal = (oc + span.exit * d) / radius;
-  return span;
+  return inside;
 }
 
 // Inside the infinite cylinder x^2 + y^2 <= radius^2.
@@ -52,18 +60,14 @@ std::optional<Span> cylinder_span(const Vec3& o, const Vec3& d, double radius) {
     if (c > 0.0) return std::nullopt;
     return Span{};  // parallel to the axis and inside: all of the ray
   }
-  const double b = 2.0 * (o[0] * d[0] + o[1] * d[1]);
-  const double discriminant = b * b - 4.0 * a * c;
-  if (discriminant <= 0.0) return std::nullopt;
-  const double root = std::sqrt(discriminant);
-  Span span;
-  span.enter = (-b - root) / (2.0 * a);
-  span.exit = (-b + root) / (2.0 * a);
+  std::optional<Span> inside = between_roots(a, 2.0 * (o[0] * d[0] + o[1] * d[1]), c);
+  if (!inside) return std::nullopt;
+  Span& span = *inside;
   const Vec3 p0 = o + span.enter * d;
   const Vec3 p1 = o + span.exit * d;
   span.enter_normal = Vec3(p0[0], p0[1], 0.0) / radius;
   span.exit_normal = Vec3(p1[0], p1[1], 0.0) / radius;
-  return span;
+  return inside;
 }
 
 // Inside the horizontal slab low <= z <= high.
