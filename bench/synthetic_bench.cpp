@@ -9,11 +9,10 @@
 #include <map>
 #include <string>
 
+#include "bundled_plugins.hpp"
 #include "facet/framework/diagnostics.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_spec.hpp"
-#include "facet/framework/plugin_loader.hpp"
-#include "facet/framework/registry.hpp"
 #include "facet/framework/validated_graph.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "facet/types/images.hpp"
@@ -23,17 +22,10 @@
 
 namespace {
 
+using facet::test::bundled_plugins;
+
 const std::string& preset_of(const benchmark::State& state) {
   return facet::synthetic::preset_names().at(static_cast<std::size_t>(state.range(0)));
-}
-
-const facet::Registry& bundled_plugins() {
-  static const facet::Registry registry = [] {
-    facet::Registry loaded;
-    facet::load_plugins({{FACET_PLUGIN_DIR, "build"}}, loaded);
-    return loaded;
-  }();
-  return registry;
 }
 
 // Loads and validates a shipped graph with graph params; aborts the benchmark on errors.

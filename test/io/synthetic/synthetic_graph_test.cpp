@@ -6,11 +6,10 @@
 #include <map>
 #include <string>
 
+#include "bundled_plugins.hpp"
 #include "facet/framework/diagnostics.hpp"
 #include "facet/framework/executor.hpp"
 #include "facet/framework/graph_spec.hpp"
-#include "facet/framework/plugin_loader.hpp"
-#include "facet/framework/registry.hpp"
 #include "facet/framework/validated_graph.hpp"
 #include "facet/testing/stage_runner.hpp"
 #include "io/frames_source.hpp"
@@ -19,17 +18,9 @@
 
 namespace {
 
+using facet::test::bundled_plugins;
 using facet::test::generate;
 using facet::test::same_image;
-
-const facet::Registry& bundled_plugins() {
-  static const facet::Registry registry = [] {
-    facet::Registry loaded;
-    facet::load_plugins({{FACET_PLUGIN_DIR, "build"}}, loaded);
-    return loaded;
-  }();
-  return registry;
-}
 
 // Runs graphs/synthetic.yaml with the graph params; returns the error text, empty on success.
 std::string run_synthetic_graph(const std::map<std::string, std::string>& params) {
