@@ -92,25 +92,26 @@ MarkerArrayMessage::MarkerArrayMessage(const ObjectList& objects, std::int64_t s
     marker.mesh_file.filename = empty_.data();
     return marker;
   };
+  // One shape of one object: a box or the superquadric (drawn as its bounding ellipsoid).
+  const auto add_shape = [&](char* ns, std::int32_t type, std::int32_t id,
+                             const Eigen::Isometry3d& pose, const Eigen::Vector3d& half_extents_m,
+                             float alpha) {
+    auto marker = blank(kAdd);
+    marker.ns = ns;
+    marker.id = id;
+    marker.type = type;
+    marker.pose = to_pose(pose);
+    marker.scale = marker_scale(half_extents_m);
+    marker.color = colour_of(id, alpha);
+    markers_.push_back(marker);
+  };
   markers_.push_back(blank(kDeleteAll));
   for (const ObjectModel& model : objects.objects) {
-    auto box = blank(kAdd);
-    box.ns = box_namespace_.data();
-    box.id = model.id;
-    box.type = kCube;
-    box.pose = to_pose(model.box.pose);
-    box.scale = marker_scale(model.box.half_extents_m);
-    box.color = colour_of(model.id, kBoxAlpha);
-    markers_.push_back(box);
+    add_shape(box_namespace_.data(), kCube, model.id, model.box.pose, model.box.half_extents_m,
+              kBoxAlpha);
     if (!model.superquadric.valid) continue;
-    auto superquadric = blank(kAdd);
-    superquadric.ns = superquadric_namespace_.data();
-    superquadric.id = model.id;
-    superquadric.type = kSphere;
-    superquadric.pose = to_pose(model.superquadric.pose);
-    superquadric.scale = marker_scale(model.superquadric.size_m);
-    superquadric.color = colour_of(model.id, kSuperquadricAlpha);
-    markers_.push_back(superquadric);
+    add_shape(superquadric_namespace_.data(), kSphere, model.id, model.superquadric.pose,
+              model.superquadric.size_m, kSuperquadricAlpha);
   }
   message_.markers._buffer = markers_.data();
   message_.markers._length = static_cast<std::uint32_t>(markers_.size());
