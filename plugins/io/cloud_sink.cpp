@@ -24,8 +24,8 @@ constexpr std::size_t kBinaryVertexBytes = 3 * 4 + 3 + 4;  // float x, y, z; uch
 
 const In<PointImage> kPoints{"points", "3D points, CV_32FC3 in metres, NaN = invalid."};
 const OptionalIn<LabelImage> kLabels{"labels",
-                                     "Segment ids of the same size, CV_32SC1 (CV_16UC1 and CV_8UC1 "
-                                     "accepted), >= 0; unconnected or empty: every label is 0."};
+                                     "Segment ids of the same size, CV_32SC1, >= 0; unconnected or "
+                                     "empty: every label is 0."};
 const Param<std::string> kDir{
     "dir", "out/cloud", "Output folder, created if missing.", {.required = true}};
 const EnumParam<PlyFormat> kFormat{

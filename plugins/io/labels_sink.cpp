@@ -8,7 +8,7 @@
 namespace facet::io {
 namespace {
 
-const In<LabelImage> kLabels{"labels", "Segment ids, CV_32SC1 (CV_16UC1 and CV_8UC1 accepted)."};
+const In<LabelImage> kLabels{"labels", "Segment ids, CV_32SC1, >= 0."};
 const Param<std::string> kDir{
     "dir", "out/labels", "Output folder, created if missing.", {.required = true}};
 

@@ -13,9 +13,7 @@ namespace {
 
 const In<DepthImage> kDepth{"depth", "Depth, CV_16UC1 in mm or CV_32FC1 in m; names the file."};
 const In<LabelImage> kLabels{
-    "labels",
-    "Segment ids of the same size, CV_32SC1 (CV_16UC1 and CV_8UC1 accepted), "
-    "0 = not a segment; what io.labels takes."};
+    "labels", "Segment ids of the same size, CV_32SC1, 0 = not a segment; what io.labels takes."};
 const OptionalIn<EdgeImage> kEdges{
     "edges",
     "Normal edges of the same size; the mask (CV_8UC1, 255 = edge) is "
@@ -96,35 +94,16 @@ void OverlaySink::process(ProcessContext& ctx) {
   earlier_.warn_once(ctx);
   const DepthImage& depth = kDepth(ctx);
   const std::filesystem::path file = frame_file(dir_, depth.frame);
-  if (depth.depth.type() != CV_16UC1 && depth.depth.type() != CV_32FC1) {
-    throw StageError("cannot write '" + file.string() +
-                     "': depth must be CV_16UC1 (mm) or CV_32FC1 (m)");
-  }
   if (kLabels.packet(ctx).empty()) return;
-  const cv::Mat& labels = kLabels(ctx).labels;
-  cv::Mat ids;  // empty: no segments
-  if (!labels.empty()) {
-    if (labels.channels() != 1 ||
-        (labels.depth() != CV_32S && labels.depth() != CV_16U && labels.depth() != CV_8U)) {
-      throw StageError("cannot write '" + file.string() +
-                       "': labels must be single-channel CV_32S, CV_16U or CV_8U");
-    }
-    require_same_size(depth.depth, "depth", labels, "labels");
-    if (labels.depth() == CV_32S) {
-      ids = labels;
-    } else {
-      labels.convertTo(ids, CV_32S);
-    }
-  }
+  // The packets keep their types' formats (facet/types/images.hpp): depth CV_16UC1 or CV_32FC1,
+  // ids CV_32SC1 and never negative, a CV_8UC1 edge mask; only the sizes are checked here.
+  const cv::Mat& ids = kLabels(ctx).labels;
+  require_same_size(depth.depth, "depth", ids, "labels");
   cv::Mat mask;
   const EdgeImage* edges_input = style_.draw_edges ? kEdges(ctx) : nullptr;
   if (edges_input != nullptr) {
-    const EdgeImage& edges = *edges_input;
-    if (edges.mask.empty()) {
-      throw StageError("cannot write '" + file.string() + "': the edge image has no mask");
-    }
-    require_same_size(depth.depth, "depth", edges.mask, "edges");
-    mask = edges.mask;
+    require_same_size(depth.depth, "depth", edges_input->mask, "edges");
+    mask = edges_input->mask;
   }
   write_png(file, render_overlay(depth.depth, ids, mask, style_, ctx.parallel_runner()));
 }

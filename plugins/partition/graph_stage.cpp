@@ -291,10 +291,8 @@ void PartitionGraph::process(ProcessContext& ctx) {
   graph_.nodes.clear();
   check_partition_inputs(blobs.labels, patches.labels, points.points);
   // The gap lines read the images as flat arrays, which packet images are (facet/types/images.hpp).
-  const cv::Mat& patch_image = patches.labels;
-  const cv::Mat& point_image = points.points;
-  const cv::Mat& blob_image = blobs.labels;
-  segments_.build(blobs.labels, patch_image, point_image);
+  const FrameImages images{&patches.labels, &points.points, &blobs.labels};
+  segments_.build(blobs.labels, patches.labels, points.points);
   neighbours_.build(adjacency, segments_.max_patch);
   graph_.build(segments_, blobs.labels.cols, rule_.nodes);
 
@@ -305,13 +303,12 @@ void PartitionGraph::process(ProcessContext& ctx) {
   const std::size_t convex_count = edges_.size();
   const TouchingNodes touching = touching_nodes(graph_, neighbours_);
   if (rule_.coplanar) {
-    add_coplanar_edges(graph_, FrameImages{&patch_image, &point_image, &blob_image}, touching,
-                       rule_.coplanar_rule, edges_);
+    add_coplanar_edges(graph_, images, touching, rule_.coplanar_rule, edges_);
   }
   const std::size_t coplanar_count = edges_.size() - convex_count;
   if (rule_.curvature) {
-    add_curvature_edges(segments_, graph_, FrameImages{&patch_image, &point_image, &blob_image},
-                        rule_.coplanar_rule, rule_.curvature_rule, edges_);
+    add_curvature_edges(segments_, graph_, images, rule_.coplanar_rule, rule_.curvature_rule,
+                        edges_);
   }
   const std::size_t curvature_count = edges_.size() - convex_count - coplanar_count;
 
@@ -344,7 +341,7 @@ void PartitionGraph::process(ProcessContext& ctx) {
     }
   }
   if (cores) {
-    next_id = claim_unclaimed_cores(objects, blob_image, point_image, points.camera.fx,
+    next_id = claim_unclaimed_cores(objects, blobs.labels, points.points, points.camera.fx,
                                     ClaimedFaces{&node_of_pixel_, &face_planes_}, core_rule_,
                                     core_buffers_, next_id);
   }

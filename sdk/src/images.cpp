@@ -47,6 +47,12 @@ __attribute__((target_clones("avx2", "default"))) std::uint32_t largest_unsigned
   return largest;
 }
 
+// The label image's plane: everything but its ids' range.
+std::string label_plane_error(const LabelImage& image) {
+  return plane_error(image.labels, "labels", image.labels.type() == CV_32SC1, "CV_32SC1",
+                     image.camera);
+}
+
 template <class Image>
 Image checked(Image image) {
   if (std::string error = image.format_error(); !error.empty()) {
@@ -108,23 +114,21 @@ LabelImage LabelImage::make(const FrameHeader& frame, cv::Mat labels, std::int32
 }
 
 LabelImage LabelImage::counted(const FrameHeader& frame, cv::Mat labels) {
-  std::uint32_t largest = 0;
-  if (!labels.empty() && labels.type() == CV_32SC1 && labels.isContinuous()) {
-    largest = largest_unsigned(labels.ptr<std::int32_t>(), labels.total());
+  LabelImage image{frame, std::move(labels), 0};
+  if (std::string error = label_plane_error(image); !error.empty()) {
+    throw std::invalid_argument(std::move(error));
   }
-  // Above INT32_MAX the image holds a negative id: make() refuses it with the id.
-  const auto count = largest <= static_cast<std::uint32_t>(INT32_MAX)
-                         ? static_cast<std::int32_t>(largest)
-                         : std::int32_t{0};
-  return make(frame, std::move(labels), count);
+  const std::uint32_t largest =
+      largest_unsigned(image.labels.ptr<std::int32_t>(), image.labels.total());
+  // Above INT32_MAX the image holds a negative id: the full check refuses it, naming the id.
+  if (largest > static_cast<std::uint32_t>(INT32_MAX)) return checked(std::move(image));
+  // Every id lies in [0, largest] by construction: no second scan.
+  image.count = static_cast<std::int32_t>(largest);
+  return image;
 }
 
 std::string LabelImage::format_error() const {
-  if (std::string error =
-          plane_error(labels, "labels", labels.type() == CV_32SC1, "CV_32SC1", camera);
-      !error.empty()) {
-    return error;
-  }
+  if (std::string error = label_plane_error(*this); !error.empty()) return error;
   if (count < 0) return "count is " + std::to_string(count) + ", must be 0 or more";
   if (largest_unsigned(labels.ptr<std::int32_t>(), labels.total()) <=
       static_cast<std::uint32_t>(count)) {
