@@ -11,6 +11,7 @@
 #include "facet/algo/plane.hpp"
 #include "facet/stage.hpp"
 #include "planes/candidate_planes.hpp"
+#include "planes/flat_objects.hpp"
 #include "planes/plane_assignment.hpp"
 #include "planes/scene_model.hpp"
 #include "planes/support_rule.hpp"
@@ -34,6 +35,8 @@ class SupportPlaneStage final : public Stage {
   TableRule table_rule_;
   SupportRule support_rule_;
   AssignmentRule assignment_rule_;
+  FlatObjectRule flat_object_rule_;
+  FlatObjectBuffers flat_object_buffers_;
   double horizontal_max_deg_;
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto

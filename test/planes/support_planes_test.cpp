@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -406,6 +407,115 @@ TEST(SupportPlanes, WhatTheTableLeavesOfItsPatchIsOnePatchPerPiece) {
     }
     EXPECT_TRUE(touches_own_side) << "object " << object;
   }
+}
+
+// A book 1 cm thick lies within delta of the table. Where no normal edge closed around it, its
+// top grew into the table's patch; the table then took it. Rule 7 (docs/planes.md) gives the
+// raised region back as a patch of its own.
+struct BookOnTable {
+  RenderedScene scene;
+  PointImage points;
+  LabelImage patches;  // the book's faces merged into the table's patch
+};
+
+BookOnTable book_merged_into_table(double half_thickness_m) {
+  SceneBuilder builder;
+  builder.plane(kTable.table_point, kTable.up);                             // 1: table
+  kTable.box_on_table(builder, 0.0, 0.05, {0.08, 0.06, half_thickness_m});  // 2: book
+  BookOnTable book;
+  book.scene = builder.render();
+  book.points = scene_points(book.scene);
+  book.patches = face_patches(book.scene, book.points);
+  const int table_patch = majority_label(book.scene.object, 1, book.patches.labels);
+  book.patches.labels.setTo(table_patch, book.scene.object == 2);
+  return book;
+}
+
+TEST(SupportPlanes, AFlatObjectTheTableTookIsGivenBack) {
+  const BookOnTable book = book_merged_into_table(0.005);
+  const auto book_px = static_cast<double>(pixels_of(book.scene.object, 2));
+  ASSERT_GT(book_px, 2000.0);
+
+  // Without rule 7 the table keeps the book: the failure this rule is for.
+  const PlanesResult off =
+      run_planes(book.patches, book.points, {{"flat_object_window_px", std::int64_t{0}}});
+  EXPECT_LT(static_cast<double>(count_where(book.scene.object, 2, off.patches.labels, 0)) - book_px,
+            1.0);
+
+  const PlanesResult on = run_planes(book.patches, book.points);
+  const int book_patch = majority_label(book.scene.object, 2, on.patches.labels);
+  ASSERT_NE(book_patch, 0);
+  EXPECT_GT(static_cast<double>(count_where(book.scene.object, 2, on.patches.labels, book_patch)),
+            0.8 * book_px);
+  // The region does not reach far onto the table (the smoothing blurs its border by a few px).
+  EXPECT_LT(static_cast<double>(count_where(book.scene.object, 1, on.patches.labels, book_patch)),
+            0.1 * book_px);
+  ASSERT_NE(on.planes.table(), nullptr);
+  EXPECT_LT(on.planes.table()->inliers + static_cast<std::int64_t>(0.8 * book_px),
+            off.planes.table()->inliers);
+  // grow.blobs keeps it: it rises above the table.
+  const LabelImage blobs = run_blobs(on.patches, book.points, &on.planes);
+  EXPECT_NE(majority_label(book.scene.object, 2, blobs.labels), 0);
+}
+
+// How many pixels rule 7 takes from the planes: plane labels with it against without it.
+std::int64_t flat_object_px(const LabelImage& patches, const PointImage& points,
+                            const Overrides& params = {}) {
+  const PlanesResult on = run_planes(patches, points, params);
+  const PlanesResult off =
+      run_planes(patches, points, {{"flat_object_window_px", std::int64_t{0}}});
+  return cv::countNonZero(on.plane_labels.labels != off.plane_labels.labels);
+}
+
+// A thinner sheet (4 mm) does not rise min_object_height_m above the table: it stays table.
+TEST(SupportPlanes, ASheetThinnerThanTheLeastObjectHeightStaysTable) {
+  const BookOnTable sheet = book_merged_into_table(0.002);
+  EXPECT_EQ(flat_object_px(sheet.patches, sheet.points), 0);
+}
+
+// A table that rises slowly by 8 mm (a warp, or a depth camera's low-frequency error) averages
+// above min_object_height_m in its middle, but its border is no step: it stays table. So does
+// a narrow raised strip, the foot of an object smoothed together with the table around it. The
+// same step over a wide rectangle is a flat object.
+TEST(SupportPlanes, ASlowRiseOrANarrowStripOfTheTableStaysTable) {
+  SceneBuilder builder;
+  builder.plane(kTable.table_point, kTable.up);
+  const RenderedScene scene = builder.render();
+  const LabelImage patches = face_patches(scene, scene_points(scene));
+  const cv::Point2d centre(scene.depth_m.cols / 2.0, scene.depth_m.rows / 2.0);
+  const auto lifted = [&](auto height_m_at) {
+    PointImage points = scene_points(scene);
+    for (int v = 0; v < points.points.rows; ++v) {
+      for (int u = 0; u < points.points.cols; ++u) {
+        const Eigen::Vector3d lift = height_m_at(u, v) * kTable.up;
+        points.points.at<cv::Vec3f>(v, u) +=
+            cv::Vec3f(static_cast<float>(lift.x()), static_cast<float>(lift.y()),
+                      static_cast<float>(lift.z()));
+      }
+    }
+    return points;
+  };
+  const auto box_of = [&](double half_width_px, double half_height_px, double height_m) {
+    return [=](int u, int v) {
+      return std::abs(u - centre.x) < half_width_px && std::abs(v - centre.y) < half_height_px
+                 ? height_m
+                 : 0.0;
+    };
+  };
+  const PointImage bump = lifted([&](int u, int v) {
+    const double r_px = std::hypot(u - centre.x, v - centre.y);
+    return 0.008 * std::exp(-(r_px * r_px) / (2.0 * 60.0 * 60.0));
+  });
+  EXPECT_EQ(flat_object_px(patches, bump), 0);
+  // It is the border test that keeps the bump (its middle averages above the height).
+  EXPECT_GT(flat_object_px(patches, bump, {{"flat_object_min_step_m", 0.0}}), 1000);
+  const PointImage strip = lifted(box_of(150.0, 6.0, 0.008));
+  EXPECT_EQ(flat_object_px(patches, strip), 0);
+  // It is the width that keeps the strip (its border is a step).
+  EXPECT_GT(flat_object_px(patches, strip, {{"flat_object_min_width_px", 0.0}}), 1000);
+  const std::int64_t wide_px = flat_object_px(patches, lifted(box_of(30.0, 20.0, 0.008)));
+  EXPECT_GT(wide_px, 59 * 39 * 7 / 10);
+  EXPECT_LT(wide_px, 59 * 39 * 12 / 10);
 }
 
 }  // namespace
