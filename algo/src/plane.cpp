@@ -24,15 +24,6 @@ Plane Plane::through(const Eigen::Vector3f& unit_normal, const Eigen::Vector3f& 
   return plane;
 }
 
-void PlaneMoments::add(float x, float y, float z) {
-  const Eigen::Vector3d p(x, y, z);
-  if (count_ == 0) origin_m_ = p;
-  const Eigen::Vector3d d = p - origin_m_;
-  sum_m_ += d;
-  sum_sq_m2_.noalias() += d * d.transpose();
-  ++count_;
-}
-
 Eigen::Vector3d PlaneMoments::centroid_m() const {
   if (count_ == 0) return Eigen::Vector3d::Zero();
   return origin_m_ + sum_m_ / static_cast<double>(count_);
@@ -42,7 +33,9 @@ std::optional<Plane> PlaneMoments::plane() const {
   if (count_ < 3) return std::nullopt;
   const double inverse = 1.0 / static_cast<double>(count_);
   const Eigen::Vector3d mean = sum_m_ * inverse;
-  const Eigen::Matrix3d covariance = sum_sq_m2_ * inverse - mean * mean.transpose();
+  Eigen::Matrix3d sum_sq_m2 = sum_sq_m2_;
+  sum_sq_m2.triangularView<Eigen::StrictlyLower>() = sum_sq_m2.transpose();
+  const Eigen::Matrix3d covariance = sum_sq_m2 * inverse - mean * mean.transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   if (solver.info() != Eigen::Success) return std::nullopt;
   // Eigenvalues ascending: a plane needs spread in two directions.

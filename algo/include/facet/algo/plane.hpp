@@ -37,7 +37,21 @@ struct Plane {
 // point, so that centimetre spreads at metre range lose nothing to cancellation.
 class PlaneMoments {
  public:
-  void add(float x, float y, float z);
+  // Inline: it runs once per point of every fitted segment.
+  void add(float x, float y, float z) {
+    const Eigen::Vector3d p(x, y, z);
+    if (count_ == 0) origin_m_ = p;
+    const Eigen::Vector3d d = p - origin_m_;
+    sum_m_ += d;
+    // The upper triangle only: plane() mirrors it.
+    sum_sq_m2_(0, 0) += d.x() * d.x();
+    sum_sq_m2_(0, 1) += d.x() * d.y();
+    sum_sq_m2_(0, 2) += d.x() * d.z();
+    sum_sq_m2_(1, 1) += d.y() * d.y();
+    sum_sq_m2_(1, 2) += d.y() * d.z();
+    sum_sq_m2_(2, 2) += d.z() * d.z();
+    ++count_;
+  }
   std::int64_t count() const { return count_; }
   // The mean of the points added (zero for none).
   Eigen::Vector3d centroid_m() const;
@@ -52,7 +66,7 @@ class PlaneMoments {
   std::int64_t count_ = 0;
   Eigen::Vector3d origin_m_ = Eigen::Vector3d::Zero();   // the first point
   Eigen::Vector3d sum_m_ = Eigen::Vector3d::Zero();      // of p - origin
-  Eigen::Matrix3d sum_sq_m2_ = Eigen::Matrix3d::Zero();  // of (p - origin)(p - origin)ᵀ
+  Eigen::Matrix3d sum_sq_m2_ = Eigen::Matrix3d::Zero();  // of (p - origin)(p - origin)ᵀ, upper
 };
 
 // xyz: interleaved points, three floats each (metres, all finite).
