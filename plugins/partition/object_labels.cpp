@@ -1,6 +1,10 @@
 #include "partition/object_labels.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "facet/algo/label_runs.hpp"
 
 namespace facet::partition {
 namespace {
@@ -65,13 +69,14 @@ std::int32_t relabel_in_raster_order(cv::Mat& objects) {
     max_id = std::max(max_id, labels[i]);
   std::vector<std::int32_t> new_id(static_cast<std::size_t>(max_id) + 1, 0);
   std::int32_t count = 0;
-  for (std::int32_t i = 0; i < n; ++i) {
-    const std::int32_t id = labels[i];
-    if (id <= 0) continue;
-    std::int32_t& mapped = new_id[static_cast<std::size_t>(id)];
-    if (mapped == 0) mapped = ++count;
-    labels[i] = mapped;
-  }
+  // By runs of one id along the raster: one lookup per run, not per pixel.
+  algo::for_each_label_run(labels, static_cast<std::size_t>(n),
+                           [&](std::int32_t id, std::size_t begin, std::size_t end) {
+                             if (id <= 0) return;
+                             std::int32_t& mapped = new_id[static_cast<std::size_t>(id)];
+                             if (mapped == 0) mapped = ++count;
+                             std::fill(labels + begin, labels + end, mapped);
+                           });
   return count;
 }
 

@@ -5,6 +5,8 @@
 #include <optional>
 #include <utility>
 
+#include "facet/algo/label_runs.hpp"
+
 namespace facet::planes {
 namespace {
 
@@ -34,11 +36,12 @@ std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& 
   const std::size_t total = labels.total();
   // Sizes count patch pixels (those of grow.surfaces all have a valid point); only the sampled
   // points are checked below.
+  // Both passes go by runs of one label along the raster: a patch's pixels mostly come in long
+  // runs, and a counter per run instead of per pixel was most of the time of this kernel.
   std::vector<std::int64_t> size_px(static_cast<std::size_t>(count) + 1, 0);
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::int32_t id = label[i];
-    if (id > 0 && id <= count) ++size_px[id];
-  }
+  algo::for_each_label_run(label, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+    if (id > 0 && id <= count) size_px[id] += static_cast<std::int64_t>(end - begin);
+  });
   std::vector<std::int32_t> ids;
   for (std::int32_t id = 1; id <= count; ++id) {
     if (size_px[id] >= min_px) ids.push_back(id);
@@ -62,21 +65,27 @@ std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& 
     candidates[c].points.reserve(3 * static_cast<std::size_t>(size_px[id] / step[id] + 1));
     slot[id] = static_cast<int>(c);
   }
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::int32_t id = label[i];
-    if (id <= 0 || id > count || slot[id] < 0) continue;
-    if (skip[id] > 0) {
-      --skip[id];
-      continue;
-    }
-    const float* p = point + 3 * i;
-    if (!std::isfinite(p[2])) continue;  // the next point of the patch is taken instead
-    skip[id] = step[id] - 1;
+  algo::for_each_label_run(label, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+    if (id <= 0 || id > count || slot[id] < 0) return;
     auto& out = candidates[slot[id]].points;
-    out.push_back(p[0]);
-    out.push_back(p[1]);
-    out.push_back(p[2]);
-  }
+    std::int64_t to_skip = skip[id];
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto left_in_run = static_cast<std::int64_t>(end - i);
+      if (to_skip >= left_in_run) {
+        to_skip -= left_in_run;
+        break;
+      }
+      i += static_cast<std::size_t>(to_skip);
+      to_skip = 0;
+      const float* p = point + 3 * i;
+      if (!std::isfinite(p[2])) continue;  // the next point of the patch is taken instead
+      to_skip = step[id] - 1;
+      out.push_back(p[0]);
+      out.push_back(p[1]);
+      out.push_back(p[2]);
+    }
+    skip[id] = to_skip;
+  });
   return candidates;
 }
 

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+
+#include "facet/algo/label_runs.hpp"
 
 namespace facet::planes {
 namespace {
@@ -58,30 +61,42 @@ PlaneAssignment assign_to_planes(const cv::Mat& patch_labels, std::int32_t patch
   stats.off_px.assign(patch_slots, 0);
   stats.table_height_sum_m.assign(patch_slots, 0.0);
   stats.near_squared_m2.assign(patch_slots * plane_count, 0.0);
-  for (std::size_t i = 0; i < total; ++i) {
-    const float* p = point + 3 * i;
-    std::int32_t near = 0;
-    const std::size_t slot = patch_slot(label[i]);
-    if (std::isfinite(p[2])) {
-      ++out.valid_px;
-      bool off = true;
-      for (std::size_t c = 0; c < plane_count; ++c) {
-        const float d = planes[c].signed_distance_m(p);
-        const float distance = std::abs(d);
-        off = off && distance > 2.0F * delta_m;
-        if (distance <= delta_m) {
-          near = static_cast<std::int32_t>(c + 1);
-          ++out.near_px[slot * plane_count + c];
-          stats.near_squared_m2[slot * plane_count + c] += static_cast<double>(d) * d;
-          if (c == table_c) stats.table_height_sum_m[slot] += d;
-          break;
+  // By runs of one patch label: the patch's counters stay in registers along the run. The sums
+  // are still taken point by point in raster order, so they come out exactly as per pixel.
+  algo::for_each_label_run(label, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+    const std::size_t slot = patch_slot(id);
+    std::int64_t* near_px = out.near_px.data() + slot * plane_count;
+    double* near_squared_m2 = stats.near_squared_m2.data() + slot * plane_count;
+    double table_height_sum_m = stats.table_height_sum_m[slot];
+    std::int64_t valid_px = 0;
+    std::int64_t off_px = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const float* p = point + 3 * i;
+      std::int32_t near = 0;
+      if (std::isfinite(p[2])) {
+        ++valid_px;
+        bool off = true;
+        for (std::size_t c = 0; c < plane_count; ++c) {
+          const float d = planes[c].signed_distance_m(p);
+          const float distance = std::abs(d);
+          off = off && distance > 2.0F * delta_m;
+          if (distance <= delta_m) {
+            near = static_cast<std::int32_t>(c + 1);
+            ++near_px[c];
+            near_squared_m2[c] += static_cast<double>(d) * d;
+            if (c == table_c) table_height_sum_m += d;
+            break;
+          }
         }
+        off_px += off ? 1 : 0;
       }
-      ++out.patch_px[slot];
-      stats.off_px[slot] += off ? 1 : 0;
+      plane_of[i] = near;
     }
-    plane_of[i] = near;
-  }
+    out.valid_px += valid_px;
+    out.patch_px[slot] += valid_px;
+    stats.off_px[slot] += off_px;
+    stats.table_height_sum_m[slot] = table_height_sum_m;
+  });
 
   // The object faces: a face that lies mostly well off the planes keeps its points from every
   // plane; a raised one (the table's points lie around 0 above it, a book's top at
@@ -122,18 +137,29 @@ PlaneAssignment assign_to_planes(const cv::Mat& patch_labels, std::int32_t patch
         out.inliers[c] > 0 ? std::sqrt(squared_sum[c] / static_cast<double>(out.inliers[c])) : 0.0;
   }
 
-  out.left_px.assign(patch_slots, 0);
-  for (std::size_t i = 0; i < total; ++i) {
-    const std::size_t slot = patch_slot(label[i]);
-    if (plane_of[i] != 0 && join.joins(slot, static_cast<std::size_t>(plane_of[i] - 1))) {
-      left[i] = 0;
-      ++out.plane_px;
-      continue;
-    }
-    plane_of[i] = 0;
-    left[i] = static_cast<std::int32_t>(slot);
-    ++out.left_px[slot];
+  // Which pixels join their plane, per slot and plane id (id 0, no plane, never joins); again by
+  // runs of one patch label.
+  const std::size_t stride = plane_count + 1;
+  std::vector<std::uint8_t> joins(patch_slots * stride, 0);
+  for (std::size_t slot = 0; slot < patch_slots; ++slot) {
+    for (std::size_t c = 0; c < plane_count; ++c)
+      joins[slot * stride + c + 1] = join.joins(slot, c) ? 1 : 0;
   }
+  out.left_px.assign(patch_slots, 0);
+  algo::for_each_label_run(label, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+    const std::size_t slot = patch_slot(id);
+    const std::uint8_t* joins_slot = joins.data() + slot * stride;
+    std::int64_t joined_px = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::int32_t near = plane_of[i];
+      const bool joined = joins_slot[near] != 0;
+      plane_of[i] = joined ? near : 0;
+      left[i] = joined ? 0 : static_cast<std::int32_t>(slot);
+      joined_px += joined ? 1 : 0;
+    }
+    out.plane_px += joined_px;
+    out.left_px[slot] += static_cast<std::int64_t>(end - begin) - joined_px;
+  });
   return out;
 }
 

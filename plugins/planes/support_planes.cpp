@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "facet/algo/label_runs.hpp"
 #include "facet/algo/patch_contacts.hpp"
 #include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
@@ -568,8 +569,9 @@ std::int32_t SupportPlaneStage::split_and_drop_left_patches(cv::Mat& left_labels
   if (any_cut) {
     count = pieces_.split(left_labels, patch_count, cut, xyz, split_gate_);
     left_px.assign(static_cast<std::size_t>(count) + 1, 0);
-    for (std::size_t i = 0; i < total; ++i)
-      ++left_px[static_cast<std::size_t>(left[i])];
+    algo::for_each_label_run(left, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+      left_px[static_cast<std::size_t>(id)] += static_cast<std::int64_t>(end - begin);
+    });
   }
   const std::size_t left_slots = left_px.size();
   std::vector<char> too_small(left_slots, 0);
@@ -580,9 +582,9 @@ std::int32_t SupportPlaneStage::split_and_drop_left_patches(cv::Mat& left_labels
     small_segments = small_segments || too_small[slot] != 0;
   }
   if (small_segments) {
-    for (std::size_t i = 0; i < total; ++i) {
-      if (too_small[static_cast<std::size_t>(left[i])] != 0) left[i] = 0;
-    }
+    algo::for_each_label_run(left, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+      if (too_small[static_cast<std::size_t>(id)] != 0) std::fill(left + begin, left + end, 0);
+    });
   }
   return count;
 }
