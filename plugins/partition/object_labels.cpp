@@ -40,21 +40,47 @@ void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs_in, std::int32_t next
   const cv::Mat blobs = blobs_in.isContinuous() ? blobs_in : blobs_in.clone();
   auto* labels = objects.ptr<std::int32_t>();
   const auto* blob = blobs.ptr<std::int32_t>();
+  const int width = objects.cols;
+  const int height = objects.rows;
   const auto n = static_cast<std::int32_t>(objects.total());
-  std::vector<std::int32_t> queue;
-  bool any_gap = false;
-  for (std::int32_t i = 0; i < n; ++i) {
-    if (blob[i] <= 0) continue;
-    if (labels[i] != 0) {
-      queue.push_back(i);
-    } else {
-      any_gap = true;
+
+  // The gaps: blob pixels without an object label. They are few, so blocks without one are
+  // passed after a test that vectorises.
+  constexpr std::int32_t kBlockPx = 64;
+  std::vector<std::int32_t> gaps;
+  for (std::int32_t begin = 0; begin < n; begin += kBlockPx) {
+    const std::int32_t end = std::min(begin + kBlockPx, n);
+    std::uint32_t any = 0;
+    for (std::int32_t i = begin; i < end; ++i)
+      any |= static_cast<std::uint32_t>(blob[i] > 0) & static_cast<std::uint32_t>(labels[i] == 0);
+    if (any == 0) continue;
+    for (std::int32_t i = begin; i < end; ++i) {
+      if (blob[i] > 0 && labels[i] == 0) gaps.push_back(i);
     }
   }
-  if (!any_gap) return;
+  if (gaps.empty()) return;
+
+  // The growth starts from the labelled pixels next to a gap, in raster order. A labelled pixel
+  // with no gap among its 8 neighbours would label nothing when its turn came (labels are only
+  // ever added), so leaving it out changes nothing but the time: most labelled pixels are such.
+  std::vector<std::int32_t> queue;
+  for (const std::int32_t gap : gaps) {
+    const int u = gap % width;
+    const int v = gap / width;
+    for (int nv = std::max(v - 1, 0); nv <= std::min(v + 1, height - 1); ++nv) {
+      for (int nu = std::max(u - 1, 0); nu <= std::min(u + 1, width - 1); ++nu) {
+        const std::int32_t j = nv * width + nu;
+        if (blob[j] > 0 && labels[j] != 0) queue.push_back(j);
+      }
+    }
+  }
+  std::sort(queue.begin(), queue.end());
+  queue.erase(std::unique(queue.begin(), queue.end()), queue.end());
   grow_within_blobs(objects, blobs, queue);
-  for (std::int32_t i = 0; i < n; ++i) {
-    if (blob[i] <= 0 || labels[i] != 0) continue;
+
+  // What no labelled pixel reached: each connected part becomes an object, in raster order.
+  for (const std::int32_t i : gaps) {
+    if (labels[i] != 0) continue;
     labels[i] = next_id++;
     queue.assign(1, i);
     grow_within_blobs(objects, blobs, queue);
