@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -215,6 +216,32 @@ TEST(GrowBlobs, TouchingBoxesAreOneBlobSeparatedBoxesTwo) {
   kTable.box_on_table(apart, -0.065, 0.0, {0.05, 0.05, 0.06});
   kTable.box_on_table(apart, 0.065, 0.0, {0.05, 0.05, 0.08});  // 3 cm gap
   EXPECT_EQ(run_scene(apart).blobs.count, 2);
+}
+
+TEST(GrowBlobs, APointWithAnyCoordinateNotFiniteTakesNoPart) {
+  SceneBuilder builder;
+  builder.plane(kTable.table_point, kTable.up);
+  kTable.box_on_table(builder, 0.0, 0.0, {0.08, 0.08, 0.08});
+  const SceneRun run = run_scene(builder);
+  ASSERT_EQ(run.blobs.count, 1);
+  // Spoil one coordinate of three of the box's points: x NaN, y infinite, z NaN.
+  std::vector<cv::Point> box_pixels;
+  cv::findNonZero(run.blobs.labels == 1, box_pixels);
+  ASSERT_GT(box_pixels.size(), 300u);
+  cv::Mat xyz = run.points.points.clone();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const std::vector<cv::Point> spoilt{box_pixels[100], box_pixels[200], box_pixels[300]};
+  xyz.at<cv::Vec3f>(spoilt[0])[0] = nan;
+  xyz.at<cv::Vec3f>(spoilt[1])[1] = inf;
+  xyz.at<cv::Vec3f>(spoilt[2])[2] = nan;
+  const PointImage points = PointImage::make(run.points, xyz);
+  const LabelImage blobs = run_blobs(run.planes.patches, points, &run.planes.planes);
+  ASSERT_EQ(blobs.count, 1);
+  for (const cv::Point& pixel : spoilt)
+    EXPECT_EQ(blobs.labels.at<std::int32_t>(pixel), 0) << pixel;
+  EXPECT_EQ(cv::countNonZero(blobs.labels == 1),
+            cv::countNonZero(run.blobs.labels == 1) - static_cast<int>(spoilt.size()));
 }
 
 TEST(SupportPlanes, EmptyFrameAndNoValidDepth) {
