@@ -33,8 +33,7 @@ std::optional<Plane> PlaneMoments::plane() const {
   if (count_ < 3) return std::nullopt;
   const double inverse = 1.0 / static_cast<double>(count_);
   const Eigen::Vector3d mean = sum_m_ * inverse;
-  Eigen::Matrix3d sum_sq_m2 = sum_sq_m2_;
-  sum_sq_m2.triangularView<Eigen::StrictlyLower>() = sum_sq_m2.transpose();
+  const Eigen::Matrix3d sum_sq_m2 = sum_sq_m2_.selfadjointView<Eigen::Upper>();
   const Eigen::Matrix3d covariance = sum_sq_m2 * inverse - mean * mean.transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   if (solver.info() != Eigen::Success) return std::nullopt;

@@ -35,9 +35,8 @@ std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& 
   const auto* point = xyz.ptr<float>();
   const std::size_t total = labels.total();
   // Sizes count patch pixels (those of grow.surfaces all have a valid point); only the sampled
-  // points are checked below.
-  // Both passes go by runs of one label along the raster: a patch's pixels mostly come in long
-  // runs, and a counter per run instead of per pixel was most of the time of this kernel.
+  // points are checked below. Both passes go by runs of one label along the raster: a patch's
+  // pixels mostly come in long runs, and a counter per pixel was most of this kernel's time.
   std::vector<std::int64_t> size_px(static_cast<std::size_t>(count) + 1, 0);
   algo::for_each_label_run(label, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
     if (id > 0 && id <= count) size_px[id] += static_cast<std::int64_t>(end - begin);
