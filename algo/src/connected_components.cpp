@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace facet::algo {
 namespace {
@@ -93,8 +94,7 @@ void ComponentLabeler::write_labels(cv::Mat& labels) const {
          i < row_first_[static_cast<std::size_t>(row) + 1]; ++i) {
       const Run run = runs_[i];
       std::fill(out + column, out + run.begin, 0);
-      std::fill(out + run.begin, out + run.end,
-                id_[static_cast<std::size_t>(runs_joined_.parent(static_cast<std::int32_t>(i)))]);
+      std::fill(out + run.begin, out + run.end, id_of_run(i));
       column = run.end;
     }
     std::fill(out + column, out + labels.cols, 0);
@@ -136,6 +136,33 @@ Components ComponentLabeler::label(const cv::Mat& image, std::uint8_t value, int
   }
   write_labels(labels);
   return result;
+}
+
+void ComponentLabeler::relabel(const std::vector<std::int32_t>& new_id, cv::Mat& labels) {
+  if (new_id.size() != size_of_id_.size()) {
+    throw std::invalid_argument("components: relabel needs one new id per component");
+  }
+  if (labels.type() != CV_32SC1 || labels.rows + 1 != static_cast<int>(row_first_.size())) {
+    throw std::invalid_argument("components: labels must be the ones label() wrote");
+  }
+  std::vector<std::int64_t> size_of_new_id(1, 0);
+  for (std::size_t id = 1; id < new_id.size(); ++id) {
+    if (new_id[id] == 0) continue;
+    if (new_id[id] != static_cast<std::int32_t>(size_of_new_id.size())) {
+      throw std::invalid_argument("components: new ids must be 1..n in order, without gaps");
+    }
+    size_of_new_id.push_back(size_of_id_[id]);
+  }
+  for (std::int32_t& id : id_)
+    id = id == 0 ? 0 : new_id[static_cast<std::size_t>(id)];
+  size_of_id_ = std::move(size_of_new_id);
+  for (int row = 0; row < labels.rows; ++row) {
+    std::int32_t* out = labels.ptr<std::int32_t>(row);
+    for (std::size_t i = row_first_[static_cast<std::size_t>(row)];
+         i < row_first_[static_cast<std::size_t>(row) + 1]; ++i) {
+      std::fill(out + runs_[i].begin, out + runs_[i].end, id_of_run(i));
+    }
+  }
 }
 
 }  // namespace facet::algo

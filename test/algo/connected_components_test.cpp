@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <vector>
 
 namespace facet::algo {
 namespace {
@@ -66,6 +68,45 @@ TEST(ComponentLabeler, ComponentsUnderTheSizeFloorStayZeroAndTakeNoId) {
   EXPECT_EQ(labels.at<std::int32_t>(0, 0), 0);
   EXPECT_EQ(labels.at<std::int32_t>(1, 3), 1);
   EXPECT_EQ(labeler.size_px(1), 4);
+}
+
+// The runs of the labelled components, row by row, and a renumbering that drops one component
+// and keeps the others' order: pixels of no component are left as they were.
+TEST(ComponentLabeler, VisitsTheRunsAndRenumbersWithoutTouchingOtherPixels) {
+  const cv::Mat image = from_rows({{4, 4, 0, 4},  //
+                                   {0, 0, 0, 4},  //
+                                   {4, 0, 4, 4}});
+  ComponentLabeler labeler;
+  cv::Mat labels(image.size(), CV_32SC1);
+  ASSERT_EQ(labeler.label(image, 4, 4, 0, labels).count, 3);
+  std::vector<std::array<int, 4>> runs;
+  labeler.for_each_run([&](std::int32_t id, int row, int begin, int end) {
+    runs.push_back({id, row, begin, end});
+  });
+  const std::vector<std::array<int, 4>> expected_runs{
+      {1, 0, 0, 2}, {2, 0, 3, 4}, {2, 1, 3, 4}, {3, 2, 0, 1}, {2, 2, 2, 4}};
+  EXPECT_EQ(runs, expected_runs);
+
+  labels.at<std::int32_t>(1, 1) = -5;  // not a component's pixel: relabel leaves it
+  labeler.relabel({0, 1, 0, 2}, labels);
+  const cv::Mat expected = from_rows({{1, 1, 0, 0},  //
+                                      {0, 0, 0, 0},  //
+                                      {2, 0, 0, 0}});
+  cv::Mat expected_32;
+  expected.convertTo(expected_32, CV_32S);
+  expected_32.at<std::int32_t>(1, 1) = -5;
+  EXPECT_EQ(cv::countNonZero(labels != expected_32), 0);
+  EXPECT_EQ(labeler.size_px(1), 2);
+  EXPECT_EQ(labeler.size_px(2), 1);
+  runs.clear();
+  labeler.for_each_run([&](std::int32_t id, int row, int begin, int end) {
+    runs.push_back({id, row, begin, end});
+  });
+  EXPECT_EQ(runs, (std::vector<std::array<int, 4>>{{1, 0, 0, 2}, {2, 2, 0, 1}}));
+
+  EXPECT_THROW(labeler.relabel({0, 1}, labels), std::invalid_argument);     // too few
+  EXPECT_THROW(labeler.relabel({0, 2, 1}, labels), std::invalid_argument);  // out of order
+  EXPECT_THROW(labeler.relabel({0, 0, 2}, labels), std::invalid_argument);  // a gap
 }
 
 // A view into a larger buffer is written, and nothing around it.

@@ -32,6 +32,24 @@ class ComponentLabeler {
   // Pixels of component `id` (1..count) of the last label() call.
   std::int64_t size_px(std::int32_t id) const { return size_of_id_[static_cast<std::size_t>(id)]; }
 
+  // Calls visit(id, row, begin, end) for each run [begin, end) of row `row` that belongs to a
+  // labelled component of the last label() call, in raster order. Reads the runs, not the image.
+  template <typename Visit>
+  void for_each_run(Visit&& visit) const {
+    for (std::size_t row = 0; row + 1 < row_first_.size(); ++row) {
+      for (std::size_t i = row_first_[row]; i < row_first_[row + 1]; ++i) {
+        const std::int32_t id = id_of_run(i);
+        if (id != 0) visit(id, static_cast<int>(row), runs_[i].begin, runs_[i].end);
+      }
+    }
+  }
+
+  // Renumbers the components of the last label() call: component id becomes new_id[id] (index 0
+  // unused; 0 drops it), and the new ids must be 1..n without gaps. The components' pixels in
+  // `labels` (what label() wrote) are rewritten run by run; size_px() then answers for the new
+  // ids. Throws std::invalid_argument when new_id has not count + 1 entries or is not 1..n.
+  void relabel(const std::vector<std::int32_t>& new_id, cv::Mat& labels);
+
  private:
   struct Run {
     int begin;  // first column
@@ -41,6 +59,9 @@ class ComponentLabeler {
   void find_runs(const cv::Mat& image, std::uint8_t value);
   void join_touching_runs(int connectivity);
   void write_labels(cv::Mat& labels) const;
+  std::int32_t id_of_run(std::size_t run) const {
+    return id_[static_cast<std::size_t>(runs_joined_.parent(static_cast<std::int32_t>(run)))];
+  }
 
   std::vector<Run> runs_;               // in raster order
   std::vector<std::size_t> row_first_;  // index of each row's first run; one past the end last
