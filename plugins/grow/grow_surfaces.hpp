@@ -18,7 +18,7 @@ class GrowSurfaces final : public Stage {
 
  private:
   int connectivity_;
-  std::int64_t min_size_px_;
+  RegionSizeRule region_size_;
   double max_unassigned_ratio_;
   // Both keep their buffers from frame to frame.
   SurfaceRegionLabeler regions_;

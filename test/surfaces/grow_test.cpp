@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -22,19 +23,20 @@ namespace {
 
 const std::filesystem::path kMosd = std::filesystem::path(FACET_TEST_DATA_DIR) / "mosd";
 
-// A fronto-parallel plane at 1 m, 2 mm between pixels, every pixel surface.
+// A fronto-parallel plane at depth_m (1 m unless given), 2 mm between pixels, every pixel
+// surface.
 struct FlatInput {
   EdgeImage edges;
   PointImage points;
 };
 
-FlatInput flat_input(int width, int height) {
+FlatInput flat_input(int width, int height, float depth_m = 1.F) {
   FlatInput input;
   input.points.points = cv::Mat(height, width, CV_32FC3);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       input.points.points.at<cv::Vec3f>(y, x) =
-          cv::Vec3f(0.002F * static_cast<float>(x), 0.002F * static_cast<float>(y), 1.F);
+          cv::Vec3f(0.002F * static_cast<float>(x), 0.002F * static_cast<float>(y), depth_m);
     }
   }
   input.edges.mask = cv::Mat::zeros(height, width, CV_8UC1);
@@ -137,6 +139,63 @@ TEST(GrowSurfaces, SmallRegionsReturnToThePoolAndJoinTheirNeighbour) {
   const GrowResult kept = run_grow(input.edges, input.points, {{"min_size_px", std::int64_t{16}}});
   EXPECT_EQ(kept.patches.count, 2);
   EXPECT_EQ(kept.patches.labels.at<std::int32_t>(22, 22), 2);
+}
+
+// The rule's boundary: min_px up to the reference depth, the same area beyond it, never fewer
+// than far_min_px.
+TEST(RegionSizeRule, FarRegionsNeedTheAreaTheMinimumCoversAtTheReferenceDepth) {
+  const grow::RegionSizeRule rule{100, 1.0, 50};
+  EXPECT_TRUE(rule.keeps(100, 0.5));
+  EXPECT_FALSE(rule.keeps(99, 0.5));
+  EXPECT_FALSE(rule.keeps(99, 1.0));
+  EXPECT_TRUE(rule.keeps(64, 1.25));  // 100 * (1 / 1.25)^2 = 64
+  EXPECT_FALSE(rule.keeps(63, 1.25));
+  EXPECT_TRUE(rule.keeps(50, 2.0));  // the area asks 25, the floor 50
+  EXPECT_FALSE(rule.keeps(49, 2.0));
+  EXPECT_FALSE(rule.keeps(99, std::numeric_limits<double>::quiet_NaN()));
+  const grow::RegionSizeRule fixed{100, 0.0, 50};
+  EXPECT_FALSE(fixed.keeps(99, 3.0));
+  EXPECT_TRUE(fixed.keeps(100, 3.0));
+}
+
+// An 8 x 8 region enclosed by edges: dropped at 1 and 1.2 m (needs 100 and 69 px), kept at 1.5
+// and 3 m (needs 50: the floor) with the rule; dropped at every depth without it.
+TEST(GrowSurfaces, FarRegionsAreKeptWithTheAreaNearOnesNeed) {
+  const Overrides by_area{{"min_size_reference_depth_m", 1.0},
+                          {"min_size_far_px", std::int64_t{50}},
+                          {"assign_radius_px", std::int64_t{0}}};
+  const Overrides fixed{{"assign_radius_px", std::int64_t{0}}};
+  for (const float depth_m : {1.0F, 1.2F, 1.5F, 3.0F}) {
+    FlatInput input = flat_input(60, 60, depth_m);
+    cv::rectangle(input.edges.mask, cv::Rect(20, 20, 10, 10), cv::Scalar(255));  // 8x8 inside
+    const GrowResult grown = run_grow(input.edges, input.points, by_area);
+    const bool far = depth_m >= 1.5F;
+    EXPECT_EQ(grown.patches.count, far ? 2 : 1) << depth_m;
+    EXPECT_EQ(grown.patches.labels.at<std::int32_t>(25, 25), far ? 2 : 0) << depth_m;
+    const GrowResult without = run_grow(input.edges, input.points, fixed);
+    EXPECT_EQ(without.patches.count, 1) << depth_m;
+    EXPECT_EQ(without.patches.labels.at<std::int32_t>(25, 25), 0) << depth_m;
+  }
+}
+
+// The depth is each region's own mean: a small region at 1 m is dropped and one at 2 m kept in
+// the same frame, and the ids stay consecutive in raster order (the kept one is 2, not 3).
+TEST(GrowSurfaces, EachRegionIsJudgedAtItsOwnDepthAndIdsStayConsecutive) {
+  FlatInput input = flat_input(60, 60, 1.F);
+  cv::rectangle(input.edges.mask, cv::Rect(10, 5, 10, 10), cv::Scalar(255));   // near, 8x8
+  cv::rectangle(input.edges.mask, cv::Rect(30, 30, 10, 10), cv::Scalar(255));  // far, 8x8
+  for (int y = 31; y < 39; ++y) {
+    for (int x = 31; x < 39; ++x)
+      input.points.points.at<cv::Vec3f>(y, x)[2] = 2.F;
+  }
+  const GrowResult grown =
+      run_grow(input.edges, input.points,
+               {{"min_size_reference_depth_m", 1.0}, {"assign_radius_px", std::int64_t{0}}});
+  EXPECT_EQ(grown.patches.count, 2);
+  EXPECT_EQ(grown.patches.labels.at<std::int32_t>(0, 0), 1);
+  EXPECT_EQ(grown.patches.labels.at<std::int32_t>(8, 12), 0);
+  EXPECT_EQ(grown.patches.labels.at<std::int32_t>(34, 34), 2);
+  EXPECT_EQ(cv::countNonZero(grown.patches.labels == 2), 64);
 }
 
 // A frame whose surfaces are mostly too small to keep (a fine grid of edges, as noise or a
