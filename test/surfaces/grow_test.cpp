@@ -198,6 +198,42 @@ TEST(GrowSurfaces, EachRegionIsJudgedAtItsOwnDepthAndIdsStayConsecutive) {
   EXPECT_EQ(cv::countNonZero(grown.patches.labels == 2), 64);
 }
 
+// A rendered box 7 cm wide, 2 m away in front of a wall: its front face, narrowed by its edge
+// band, keeps a region of 50-99 px, a patch with the far rule and none without. The same box at
+// half the size and half the distance covers the same pixels, and its region stays dropped.
+TEST(GrowSurfaces, AFarBoxFaceBecomesAPatchWhereTheSameFootprintNearDoesNot) {
+  struct Case {
+    double depth_m;
+    double half_m;
+    bool patch_with_rule;
+  };
+  for (const Case& c : {Case{2.0, 0.035, true}, Case{1.0, 0.0175, false}}) {
+    SceneBuilder builder;
+    builder.plane({0.0, 0.0, c.depth_m + 0.3}, {0.0, 0.0, -1.0});
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = Eigen::Vector3d(0.0, 0.0, c.depth_m);
+    builder.box(pose, {c.half_m, c.half_m, c.half_m});
+    const RenderedScene scene = builder.render();
+    const PointImage points = points_from_depth(scene.depth_m, scene.camera, 4.0);
+    const EdgeImage edges = run_edges(cross_normals(points));
+    const Overrides no_assignment{{"assign_radius_px", std::int64_t{0}}};
+    Overrides by_area = no_assignment;
+    by_area["min_size_reference_depth_m"] = 1.0;
+    const GrowResult fixed = run_grow(edges, points, no_assignment);
+    const GrowResult grown = run_grow(edges, points, by_area);
+    EXPECT_EQ(fixed.patches.count, 1) << c.depth_m;  // the wall
+    ASSERT_EQ(grown.patches.count, c.patch_with_rule ? 2 : 1) << c.depth_m;
+    if (!c.patch_with_rule) continue;
+    const cv::Mat wall = scene.face == 1;
+    const std::int32_t box_patch = dominant_label(grown.patches.labels, wall) == 1 ? 2 : 1;
+    const cv::Mat box_pixels = grown.patches.labels == box_patch;
+    const int box_px = cv::countNonZero(box_pixels);
+    EXPECT_GE(box_px, 50);
+    EXPECT_LT(box_px, 100);
+    EXPECT_EQ(cv::countNonZero(box_pixels & wall), 0);
+  }
+}
+
 // A frame whose surfaces are mostly too small to keep (a fine grid of edges, as noise or a
 // grid of tiny objects gives) warns; a clean frame does not.
 TEST(GrowSurfaces, WarnsWhenMostPixelsAreInNoPatch) {
