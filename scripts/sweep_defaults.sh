@@ -23,11 +23,17 @@ sweeps=(
   blobs.max_distance_m=0.008:0.012:0.001
   blobs.distance_growth_start_m=1.0:1.4:0.1
   blobs.min_raised_fraction=0.4:0.6:0.05
+  patches.min_size_reference_depth_m=0.8:1.2:0.1
+  patches.min_size_far_px=40:60:5
 )
+# Only the thresholds whose names contain this (all when empty), e.g. ONLY=patches.
+only="${ONLY:-}"
+
 
 echo "| threshold | set | F at default | best F (at) | plateau within 0.01 |"
 echo "|---|---|---|---|---|"
 for sweep in "${sweeps[@]}"; do
+  [[ -z "$only" || "$sweep" == *"$only"* ]] || continue
   param="${sweep%%=*}"
   range="${sweep#*=}"
   IFS=: read -r start stop step <<<"$range"
