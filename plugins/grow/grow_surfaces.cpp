@@ -63,8 +63,8 @@ const Param<std::int64_t> kMinSizeFar{
     {.unit = "px",
      .min = 1.0,
      .max = 1.0e7,
-     .origin = "measured on the generated development sets (docs/evaluation.md): 45-60 lie on "
-               "one plateau, 30 admits noise"}};
+     .origin = "measured on the generated development sets and mOSD (docs/evaluation.md): "
+               "40-60 lie on one plateau of every set"}};
 const Param<int> kAssignRadius{
     "assign_radius_px",
     5,
@@ -100,9 +100,9 @@ StageSpec GrowSurfaces::spec() {
       "Region growing of surface pixels into patches, then edge pixels join a patch.\n"
       "1. Flood fill: connected non-edge pixels with a valid point form a region; "
       "regions under min_size_px return to the unassigned pool (with "
-      "min_size_reference_depth_m, far regions need fewer pixels: the same area). 2. One "
-      "assignment pass, "
-      "breadth-first from the patches in rounds 1..assign_radius_px: in round r every "
+      "min_size_reference_depth_m, far regions need fewer pixels: the same area). "
+      "2. One assignment pass, breadth-first from the patches in rounds 1..assign_radius_px: in "
+      "round r every "
       "unassigned pixel with a valid point that has an 8-neighbour labelled before round "
       "r takes the label of the neighbour nearest in 3D, if that neighbour is closer "
       "than assign_max_distance_m. A pixel thus joins the patch it is fewest steps from "
