@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "edges/edges_avg.hpp"
@@ -76,9 +77,15 @@ BENCHMARK(BM_GrowSurfaces)
     ->Arg(8)
     ->Unit(benchmark::kMillisecond);
 
+// range(0): 1 = graphs/tabletop.yaml's far region rule (min_size_reference_depth_m 1.0,
+// min_size_far_px 50), 0 = the stage's default fixed count.
 void BM_GrowSurfacesTabletop(benchmark::State& state) {
   static const facet::bench::FacesInput input = facet::bench::faces_input("learn0");
-  facet::testing::StageRunner<facet::grow::GrowSurfaces> grow;
+  std::map<std::string, facet::ParamValue> params;
+  if (state.range(0) != 0) {
+    params = {{"min_size_reference_depth_m", 1.0}, {"min_size_far_px", std::int64_t{50}}};
+  }
+  facet::testing::StageRunner<facet::grow::GrowSurfaces> grow(params);
   grow.set_input("edges", input.edges);
   grow.set_input("points", input.points);
   for (auto _ : state) {
@@ -89,7 +96,12 @@ void BM_GrowSurfacesTabletop(benchmark::State& state) {
   for (const auto& metric : grow.metrics())
     state.counters[metric.name] = metric.value;
 }
-BENCHMARK(BM_GrowSurfacesTabletop)->Name("grow.surfaces/tabletop")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GrowSurfacesTabletop)
+    ->Name("grow.surfaces/tabletop")
+    ->ArgName("far_rule")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
