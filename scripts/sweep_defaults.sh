@@ -29,7 +29,6 @@ sweeps=(
 # Only the thresholds whose names contain this (all when empty), e.g. ONLY=patches.
 only="${ONLY:-}"
 
-
 echo "| threshold | set | F at default | best F (at) | plateau within 0.01 |"
 echo "|---|---|---|---|---|"
 for sweep in "${sweeps[@]}"; do

@@ -153,16 +153,14 @@ void ComponentLabeler::relabel(const std::vector<std::int32_t>& new_id, cv::Mat&
     }
     size_of_new_id.push_back(size_of_id_[id]);
   }
+  // The pixels first, while the runs still answer with the old ids (a dropped one's too).
+  for_each_run([&](std::int32_t id, int row, int begin, int end) {
+    std::int32_t* out = labels.ptr<std::int32_t>(row);
+    std::fill(out + begin, out + end, new_id[static_cast<std::size_t>(id)]);
+  });
   for (std::int32_t& id : id_)
     id = id == 0 ? 0 : new_id[static_cast<std::size_t>(id)];
   size_of_id_ = std::move(size_of_new_id);
-  for (int row = 0; row < labels.rows; ++row) {
-    std::int32_t* out = labels.ptr<std::int32_t>(row);
-    for (std::size_t i = row_first_[static_cast<std::size_t>(row)];
-         i < row_first_[static_cast<std::size_t>(row) + 1]; ++i) {
-      std::fill(out + runs_[i].begin, out + runs_[i].end, id_of_run(i));
-    }
-  }
 }
 
 }  // namespace facet::algo
