@@ -36,18 +36,14 @@ void grow_within_blobs(cv::Mat& objects, const cv::Mat& blobs, std::vector<std::
 
 }  // namespace
 
-void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs_in, std::int32_t next_id) {
-  const cv::Mat blobs = blobs_in.isContinuous() ? blobs_in : blobs_in.clone();
-  auto* labels = objects.ptr<std::int32_t>();
+void collect_blob_gaps(const cv::Mat& objects, const cv::Mat& blobs,
+                       std::vector<std::int32_t>& gaps) {
+  const auto* labels = objects.ptr<std::int32_t>();
   const auto* blob = blobs.ptr<std::int32_t>();
-  const int width = objects.cols;
-  const int height = objects.rows;
   const auto n = static_cast<std::int32_t>(objects.total());
-
-  // The gaps: blob pixels without an object label. They are few, so blocks without one are
-  // passed after a test that vectorises.
+  gaps.clear();
+  // Gaps are few, so blocks without one are passed after a test that vectorises.
   constexpr std::int32_t kBlockPx = 64;
-  std::vector<std::int32_t> gaps;
   for (std::int32_t begin = 0; begin < n; begin += kBlockPx) {
     const std::int32_t end = std::min(begin + kBlockPx, n);
     std::uint32_t any = 0;
@@ -58,6 +54,16 @@ void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs_in, std::int32_t next
       if (blob[i] > 0 && labels[i] == 0) gaps.push_back(i);
     }
   }
+}
+
+void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs_in, std::int32_t next_id) {
+  const cv::Mat blobs = blobs_in.isContinuous() ? blobs_in : blobs_in.clone();
+  auto* labels = objects.ptr<std::int32_t>();
+  const auto* blob = blobs.ptr<std::int32_t>();
+  const int width = objects.cols;
+  const int height = objects.rows;
+  std::vector<std::int32_t> gaps;
+  collect_blob_gaps(objects, blobs, gaps);
   if (gaps.empty()) return;
 
   // The growth starts from the labelled pixels next to a gap, in raster order. A labelled pixel

@@ -14,6 +14,11 @@ namespace facet::partition {
 // with ids from `next_id` on. Pixels outside every blob stay 0.
 void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs, std::int32_t next_id);
 
+// The flat indices, ascending, of the pixels of a blob without an object label (both images
+// CV_32SC1, continuous, of one size).
+void collect_blob_gaps(const cv::Mat& objects, const cv::Mat& blobs,
+                       std::vector<std::int32_t>& gaps);
+
 // Renumbers the ids to 1..N in raster order of each object's first pixel and returns N.
 std::int32_t relabel_in_raster_order(cv::Mat& objects);
 
