@@ -216,6 +216,41 @@ const Param<double> kUnclaimedCoreRadiusM{
      .max = 1.0,
      .origin = "0.02-0.03 alike on generated sets; 0 splits a hole-riddled side face "
                "off mOSD learn27"}};
+const Param<double> kFrontBodyMarginM{
+    "front_body_margin_m",
+    0.0,
+    "Left-over pixels (in no patch) that would join an object whose faces are all flat, "
+    "but lie more than this in front of the plane of one of its faces, belong to another "
+    "body: such an object is convex. Connected, at least front_body_min_px of them become "
+    "an object of their own (a can on a book, a box on a box, far from the camera where "
+    "neither grew a patch), or join the object of their blob whose share they touch (a "
+    "core of the same body). The object's other left-over pixels are given to it first, "
+    "so that the new body does not grow into them. Objects with a curved face are left "
+    "alone (a bowl's inside lies in front of its floor). An object of flat faces that "
+    "is not convex (a shelf, an open box) would be cut, so the stage leaves it off; the "
+    "shipped tabletop graphs set 0.015. 0 = off.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "swept 0.01-0.02 on generated sets (plateau); docs/evaluation.md"}};
+const Param<int> kFrontBodyMinPx{
+    "front_body_min_px",
+    30,
+    "Smallest body in front of a face (pixels) that becomes an object; smaller ones are "
+    "left-over pixels.",
+    {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "20-45 alike on generated sets"}};
+const Param<double> kFrontBodyFaceRmsAt1mM{
+    "front_body_face_rms_at_1m_m",
+    0.0011,
+    "A node is a flat face for front_body_margin_m when its plane fits its points within "
+    "planar_max_rms_m (RMS) or within this times (depth / 1 m)^2: a flat face's disparity "
+    "steps alone give it an RMS that grows with the square of its depth (about 3.3 mm at "
+    "2 m for a Kinect), so far books and box tops are not planar by planar_max_rms_m.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "Kinect disparity steps (0.8 mm RMS at 1 m); 0.0008-0.0015 alike on "
+               "generated sets"}};
 const Param<bool> kEmitGraph{
     "emit_graph", false,
     "Fill the graph output. The runtime does not tell a stage whether an output is "
@@ -248,8 +283,11 @@ StageSpec PartitionGraph::spec() {
              "Cut: while a group's "
              "minimum cut, each edge (i, j) costing 1/2 (1/deg_i + 1/deg_j), costs less than "
              "max_cut_cost and (cut_needs_cycles) each side holds a cycle, the group is split "
-             "along it (weak bridges between densely joined groups). Groups are objects; the other "
-             "pixels of a blob (in no node, no point) "
+             "along it (weak bridges between densely joined groups). Groups are objects. Before "
+             "the other pixels of a blob (in no node, no point) are shared out, two kinds of "
+             "body without a patch become objects: wide unclaimed cores "
+             "(unclaimed_core_radius_px) and, with front_body_margin_m, pixels in front of a "
+             "flat face of the object they would join. The rest "
              "join the object they are fewest pixel steps from within the blob. Object ids "
              "follow the raster order of each object's first pixel.")
       .declare(kBlobs, kPatches, kAdjacency, kPoints, kObjects, kGraph, kMinPatchPx, kPlanarMaxRmsM,
@@ -259,13 +297,16 @@ StageSpec PartitionGraph::spec() {
                kCoplanarTouchingMaxDistanceM, kMaxPartners, kCurvature, kCurvatureToleranceM,
                kCurvatureMinShare, kCurvatureMinAxisRatio, kCurvatureSamples, kCurvatureMaxGapM,
                kCurvatureMaxOccludedGapM, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
-               kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM, kEmitGraph)
+               kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM,
+               kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM, kEmitGraph)
       .concurrency(Concurrency::clonable);
 }
 
 PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(kEmitGraph(params)) {
   core_rule_ = {kUnclaimedCoreRadiusPx(params), kUnclaimedCoreRadiusM(params),
                 kUnclaimedCoreMinPx(params), kConvexToleranceM(params)};
+  front_rule_ = {kFrontBodyMarginM(params), kFrontBodyMinPx(params), kPlanarMaxRmsM(params),
+                 kFrontBodyFaceRmsAt1mM(params)};
   rule_.nodes = {kMinPatchPx(params), kPlanarMaxRmsM(params)};
   rule_.convex = kConvex(params);
   rule_.convex_rule = {kConvexToleranceM(params), kConvexMinBehindShare(params),
@@ -344,6 +385,11 @@ void PartitionGraph::process(ProcessContext& ctx) {
     next_id = claim_unclaimed_cores(objects, blobs.labels, points.points, points.camera.fx,
                                     ClaimedFaces{&node_of_pixel_, &face_planes_}, core_rule_,
                                     core_buffers_, next_id);
+  }
+  if (front_rule_.margin_m > 0.0) {
+    flat_faces_of_objects(graph_, group, next_id, front_rule_, faces_of_object_);
+    next_id = claim_bodies_in_front(objects, blobs.labels, points.points, faces_of_object_,
+                                    front_rule_, front_buffers_, next_id);
   }
   fill_blob_gaps(objects, blobs.labels, next_id);
   const std::int32_t count = relabel_in_raster_order(objects);

@@ -12,6 +12,7 @@
 #include "partition/graph_cores.hpp"
 #include "partition/graph_cut.hpp"
 #include "partition/graph_edges.hpp"
+#include "partition/graph_front_bodies.hpp"
 #include "partition/graph_nodes.hpp"
 
 namespace facet::partition {
@@ -40,6 +41,9 @@ class PartitionGraph final : public Stage {
   cv::Mat node_of_pixel_;
   std::vector<FittedPlane> face_planes_;
   CoreBuffers core_buffers_;
+  FrontBodyRule front_rule_;
+  FacesOfObject faces_of_object_;
+  FrontBodyBuffers front_buffers_;
   // Kept from frame to frame for their buffers only.
   BlobSegments segments_;
   PatchNeighbours neighbours_;

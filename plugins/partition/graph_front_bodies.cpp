@@ -1,0 +1,127 @@
+#include "partition/graph_front_bodies.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "partition/object_labels.hpp"
+
+namespace facet::partition {
+namespace {
+
+// The value claim_bodies_in_front marks the mask's pixels with.
+constexpr std::uint8_t kInFront = 1;
+
+bool in_front_of_any(const std::vector<FittedPlane>& faces, const cv::Vec3f& point,
+                     double margin_m) {
+  return std::any_of(faces.begin(), faces.end(), [&](const FittedPlane& face) {
+    return face.signed_distance_m(point[0], point[1], point[2]) > margin_m;
+  });
+}
+
+}  // namespace
+
+bool FrontBodyRule::is_flat_face(double plane_rms_m, double depth_m) const {
+  return plane_rms_m <= std::max(face_max_rms_m, face_rms_at_1m_m * depth_m * depth_m);
+}
+
+void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t> group,
+                           std::int32_t id_count, const FrontBodyRule& rule, FacesOfObject& faces) {
+  const auto ids = static_cast<std::size_t>(std::max(id_count, 0));
+  faces.resize(ids);
+  for (auto& planes : faces)
+    planes.clear();
+  std::vector<bool> curved(ids, false);
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
+    const GraphNode& node = graph.nodes[i];
+    const auto id = static_cast<std::size_t>(1 + group[i]);
+    if (node.segment < 0 || id >= ids) continue;  // a patchless blob has no face
+    if (node.plane.valid && rule.is_flat_face(node.plane_rms_m, node.plane.centroid_m.z())) {
+      faces[id].push_back(node.plane);
+    } else {
+      curved[id] = true;
+    }
+  }
+  for (std::size_t id = 0; id < ids; ++id) {
+    if (curved[id]) faces[id].clear();
+  }
+}
+
+std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const cv::Mat& points,
+                                   const FacesOfObject& faces, const FrontBodyRule& rule,
+                                   FrontBodyBuffers& buffers, std::int32_t next_id) {
+  if (rule.margin_m <= 0.0) return next_id;
+  // The work is on the left-over pixels only, a few per cent of the image, and on the rectangle
+  // around them for the bodies' labelling.
+  collect_blob_gaps(objects, blobs, buffers.gaps);
+  if (buffers.gaps.empty()) return next_id;
+  const int width = objects.cols;
+  cv::Point low(width, objects.rows);
+  cv::Point high(0, 0);
+  for (const std::int32_t i : buffers.gaps) {
+    low.x = std::min(low.x, i % width);
+    high.x = std::max(high.x, i % width);
+  }
+  low.y = buffers.gaps.front() / width;
+  high.y = buffers.gaps.back() / width;
+  const cv::Rect roi(low, high + cv::Point(1, 1));
+
+  objects.copyTo(buffers.nearest);
+  fill_blob_gaps(buffers.nearest, blobs, next_id);
+  auto* placed = objects.ptr<std::int32_t>();
+  const auto* nearest = buffers.nearest.ptr<std::int32_t>();
+  const auto* point = points.ptr<cv::Vec3f>();
+  buffers.in_front.create(objects.size(), CV_8UC1);
+  buffers.in_front(roi).setTo(0);
+  auto* in_front = buffers.in_front.ptr<std::uint8_t>();
+  bool any_in_front = false;
+  for (const std::int32_t i : buffers.gaps) {
+    if (!std::isfinite(point[i][2])) continue;
+    const auto id = static_cast<std::size_t>(nearest[i]);
+    if (id >= faces.size() || faces[id].empty()) continue;
+    if (in_front_of_any(faces[id], point[i], rule.margin_m)) {
+      in_front[i] = kInFront;
+      any_in_front = true;
+    } else {
+      placed[i] = nearest[i];
+    }
+  }
+  if (!any_in_front) return next_id;
+  buffers.body.create(objects.size(), CV_32SC1);
+  cv::Mat body_roi = buffers.body(roi);
+  const std::int32_t count =
+      buffers.components.label(buffers.in_front(roi), kInFront, 8, rule.min_px, body_roi).count;
+  const auto* body = buffers.body.ptr<std::int32_t>();
+  const auto* blob = blobs.ptr<std::int32_t>();
+
+  // A body that touches the share of another object of its blob (that object's pixels, or the
+  // left-over pixels the fill would give it) is the rest of that object, e.g. of a core the same
+  // body made: it joins that object, the first one met in raster order. (Within one blob every
+  // share belongs to an object that has pixels already, so no id is taken twice.) Any other
+  // body is an object of its own.
+  std::vector<std::int32_t> id_of(static_cast<std::size_t>(count) + 1, 0);
+  for (const std::int32_t i : buffers.gaps) {
+    if (in_front[i] == 0 || body[i] == 0) continue;
+    std::int32_t& id = id_of[static_cast<std::size_t>(body[i])];
+    const int u = i % width;
+    const int v = i / width;
+    for (int nv = std::max(v - 1, 0); nv <= std::min(v + 1, objects.rows - 1) && id == 0; ++nv) {
+      for (int nu = std::max(u - 1, 0); nu <= std::min(u + 1, width - 1); ++nu) {
+        const std::int32_t j = nv * width + nu;
+        if (blob[j] == blob[i] && nearest[j] != nearest[i]) {
+          id = nearest[j];
+          break;
+        }
+      }
+    }
+  }
+  for (std::size_t c = 1; c < id_of.size(); ++c) {
+    if (id_of[c] == 0) id_of[c] = next_id++;
+  }
+  for (const std::int32_t i : buffers.gaps) {
+    if (in_front[i] != 0 && body[i] != 0) placed[i] = id_of[static_cast<std::size_t>(body[i])];
+  }
+  return next_id;
+}
+
+}  // namespace facet::partition

@@ -1,0 +1,158 @@
+// Bodies in front of a face (partition.graph): left-over pixels in front of a flat face of the
+// object they would join are another body; pixels on or behind it are that object's.
+#include "partition/graph_front_bodies.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <opencv2/core.hpp>
+
+#include "partition/object_labels.hpp"
+
+namespace facet::partition {
+namespace {
+
+// One blob (id 1) over the whole image, every point at `z_m`; the left `claimed_cols` columns
+// belong to object 1 (a face), the rest is left over.
+struct Scene {
+  cv::Mat blobs;
+  cv::Mat objects;
+  cv::Mat points;
+};
+
+Scene scene(int width_px, int height_px, int claimed_cols, float z_m) {
+  Scene s;
+  s.blobs = cv::Mat(height_px, width_px, CV_32SC1, cv::Scalar(1));
+  s.objects = cv::Mat::zeros(height_px, width_px, CV_32SC1);
+  s.objects.colRange(0, claimed_cols).setTo(1);
+  s.points = cv::Mat(height_px, width_px, CV_32FC3, cv::Scalar(0.0F, 0.0F, z_m));
+  return s;
+}
+
+// The plane z = z_m, facing the camera.
+FittedPlane facing_plane(float z_m) {
+  FittedPlane plane;
+  plane.normal = {0.0F, 0.0F, -1.0F};
+  plane.offset_m = z_m;
+  plane.centroid_m = {0.0F, 0.0F, z_m};
+  plane.valid = true;
+  return plane;
+}
+
+// Object 1 has the plane z = 1.7 m as its one flat face; ids 0 and 2 have none.
+FacesOfObject one_face() {
+  FacesOfObject faces(3);
+  faces[1].push_back(facing_plane(1.7F));
+  return faces;
+}
+
+const FrontBodyRule kRule{0.015, 30, 0.003, 0.0011};
+
+TEST(FrontBodies, PixelsInFrontOfAFlatFaceAreABodyOfTheirOwn) {
+  FrontBodyBuffers buffers;
+  // Columns 40-49 continue the face (on its plane), columns 50-79 stand 5 cm in front of it.
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.65F));
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 3);
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(50, 80) != 2), 0);
+  // The pixels on the face's plane went to the face's object first, not to the new body.
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(0, 50) != 1), 0);
+}
+
+TEST(FrontBodies, PixelsOnOrBehindTheFaceAreItsObject) {
+  FrontBodyBuffers buffers;
+  // A side face seen past the edge of a top face lies behind the top's plane.
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.points.colRange(60, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.8F));
+  // 1 cm in front: within the margin.
+  s.points.colRange(40, 50).setTo(cv::Scalar(0.0F, 0.0F, 1.69F));
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 2);
+  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+}
+
+TEST(FrontBodies, ASmallBodyIsLeftForTheFill) {
+  FrontBodyBuffers buffers;
+  // 5 x 5 = 25 pixels in front, fewer than the 30 a body needs.
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.points(cv::Rect(60, 10, 5, 5)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 2);
+  EXPECT_EQ(cv::countNonZero(s.objects == 0), 25);
+  fill_blob_gaps(s.objects, s.blobs, 2);
+  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+}
+
+TEST(FrontBodies, AnObjectWithoutFlatFacesIsLeftAlone) {
+  FrontBodyBuffers buffers;
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  const cv::Mat before = s.objects.clone();
+  const FacesOfObject none(3);
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, none, kRule, buffers, 2), 2);
+  EXPECT_EQ(cv::countNonZero(s.objects != before), 0);
+}
+
+TEST(FrontBodies, OffLeavesEveryPixelAsItWas) {
+  FrontBodyBuffers buffers;
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  const cv::Mat before = s.objects.clone();
+  const FrontBodyRule off{0.0, 30, 0.003, 0.0011};
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), off, buffers, 2), 2);
+  EXPECT_EQ(cv::countNonZero(s.objects != before), 0);
+}
+
+TEST(FrontBodies, PixelsWithoutAPointOrOutsideEveryBlobAreNotTouched) {
+  FrontBodyBuffers buffers;
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  s.points.colRange(40, 50).setTo(cv::Scalar::all(std::numeric_limits<float>::quiet_NaN()));
+  s.blobs.colRange(70, 80).setTo(0);
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 3);
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 50)), 0);  // no point: left for the fill
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(50, 70) != 2), 0);
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(70, 80)), 0);
+}
+
+TEST(FrontBodies, ABodyTouchingAnotherObjectsShareJoinsThatObject) {
+  FrontBodyBuffers buffers;
+  // Columns 70-79 are object 2 (say a core of the body); columns 40-69 stand in front of object
+  // 1's face. Those nearer object 2 are its share already; the rest touch that share.
+  Scene s = scene(80, 40, 40, 1.7F);
+  s.objects.colRange(70, 80).setTo(2);
+  s.points.colRange(40, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 3), 3);
+  fill_blob_gaps(s.objects, s.blobs, 3);
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(0, 40) != 1), 0);
+  EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 80) != 2), 0);
+}
+
+TEST(FrontBodies, AFarFaceIsFlatByTheRmsItsDisparityStepsGive) {
+  // 3.5 mm RMS: curved at 1 m (3 mm), a flat face at 2 m (1.1 mm x 2^2 = 4.4 mm).
+  EXPECT_FALSE(kRule.is_flat_face(0.0035, 1.0));
+  EXPECT_TRUE(kRule.is_flat_face(0.0035, 2.0));
+  EXPECT_TRUE(kRule.is_flat_face(0.0025, 0.5));
+  EXPECT_FALSE(kRule.is_flat_face(0.006, 2.0));
+}
+
+TEST(FrontBodies, AnObjectWithACurvedFaceHasNoFlatFaces) {
+  // Nodes 0 and 1 (flat, curved) are object 1; node 2 (flat) object 2; node 3 a patchless blob.
+  GraphNodes graph;
+  graph.nodes.resize(4);
+  for (std::size_t i = 0; i < 3; ++i) {
+    graph.nodes[i].segment = static_cast<std::int32_t>(i);
+    graph.nodes[i].plane = facing_plane(1.0F);
+    graph.nodes[i].plane_rms_m = 0.001;
+  }
+  graph.nodes[1].plane_rms_m = 0.01;
+  const std::vector<std::int32_t> group{0, 0, 1, 2};
+  FacesOfObject faces;
+  flat_faces_of_objects(graph, group, 4, kRule, faces);
+  ASSERT_EQ(faces.size(), 4U);
+  EXPECT_TRUE(faces[0].empty());
+  EXPECT_TRUE(faces[1].empty());
+  EXPECT_EQ(faces[2].size(), 1U);
+  EXPECT_TRUE(faces[3].empty());
+}
+
+}  // namespace
+}  // namespace facet::partition
