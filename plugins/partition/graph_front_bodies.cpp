@@ -9,8 +9,10 @@
 namespace facet::partition {
 namespace {
 
-// The value claim_bodies_in_front marks the mask's pixels with.
-constexpr std::uint8_t kInFront = 1;
+// What claim_bodies_in_front decides for a left-over pixel.
+constexpr std::uint8_t kUndecided = 0;  // left for fill_blob_gaps
+constexpr std::uint8_t kInFront = 1;    // a body's, if its body is large enough
+constexpr std::uint8_t kKept = 2;       // the object's it is nearest to
 
 bool in_front_of_any(const std::vector<FittedPlane>& faces, const cv::Vec3f& point,
                      double margin_m) {
@@ -53,55 +55,58 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
   if (rule.margin_m <= 0.0) return next_id;
   // The work is on the left-over pixels only, a few per cent of the image, and on the rectangle
   // around them for the bodies' labelling.
-  collect_blob_gaps(objects, blobs, buffers.gaps);
-  if (buffers.gaps.empty()) return next_id;
+  std::vector<std::int32_t>& gaps = buffers.gaps;
+  collect_blob_gaps(objects, blobs, gaps);
+  if (gaps.empty()) return next_id;
   const int width = objects.cols;
   cv::Point low(width, objects.rows);
   cv::Point high(0, 0);
-  for (const std::int32_t i : buffers.gaps) {
+  for (const std::int32_t i : gaps) {
     low.x = std::min(low.x, i % width);
     high.x = std::max(high.x, i % width);
   }
-  low.y = buffers.gaps.front() / width;
-  high.y = buffers.gaps.back() / width;
+  low.y = gaps.front() / width;
+  high.y = gaps.back() / width;
   const cv::Rect roi(low, high + cv::Point(1, 1));
 
-  objects.copyTo(buffers.nearest);
-  fill_blob_gaps(buffers.nearest, blobs, next_id);
-  auto* placed = objects.ptr<std::int32_t>();
-  const auto* nearest = buffers.nearest.ptr<std::int32_t>();
+  // Filled in place, `objects` shows the object each left-over pixel is nearest to, until the
+  // end, where the pixels that are not decided here are 0 again.
+  fill_blob_gaps(objects, blobs, next_id, gaps);
+  auto* nearest = objects.ptr<std::int32_t>();
   const auto* point = points.ptr<cv::Vec3f>();
-  buffers.in_front.create(objects.size(), CV_8UC1);
-  buffers.in_front(roi).setTo(0);
-  auto* in_front = buffers.in_front.ptr<std::uint8_t>();
+  buffers.state.create(objects.size(), CV_8UC1);
+  buffers.state(roi).setTo(kUndecided);
+  auto* state = buffers.state.ptr<std::uint8_t>();
   bool any_in_front = false;
-  for (const std::int32_t i : buffers.gaps) {
+  for (const std::int32_t i : gaps) {
     if (!std::isfinite(point[i][2])) continue;
     const auto id = static_cast<std::size_t>(nearest[i]);
     if (id >= faces.size() || faces[id].empty()) continue;
     if (in_front_of_any(faces[id], point[i], rule.margin_m)) {
-      in_front[i] = kInFront;
+      state[i] = kInFront;
       any_in_front = true;
     } else {
-      placed[i] = nearest[i];
+      state[i] = kKept;
     }
   }
-  if (!any_in_front) return next_id;
-  buffers.body.create(objects.size(), CV_32SC1);
-  cv::Mat body_roi = buffers.body(roi);
-  const std::int32_t count =
-      buffers.components.label(buffers.in_front(roi), kInFront, 8, rule.min_px, body_roi).count;
+  std::int32_t count = 0;
+  if (any_in_front) {
+    buffers.body.create(objects.size(), CV_32SC1);
+    cv::Mat body_roi = buffers.body(roi);
+    count = buffers.components.label(buffers.state(roi), kInFront, 8, rule.min_px, body_roi).count;
+  }
   const auto* body = buffers.body.ptr<std::int32_t>();
   const auto* blob = blobs.ptr<std::int32_t>();
 
   // A body that touches the share of another object of its blob (that object's pixels, or the
-  // left-over pixels the fill would give it) is the rest of that object, e.g. of a core the same
-  // body made: it joins that object, the first one met in raster order. (Within one blob every
-  // share belongs to an object that has pixels already, so no id is taken twice.) Any other
-  // body is an object of its own.
-  std::vector<std::int32_t> id_of(static_cast<std::size_t>(count) + 1, 0);
-  for (const std::int32_t i : buffers.gaps) {
-    if (in_front[i] == 0 || body[i] == 0) continue;
+  // left-over pixels nearest to it) is the rest of that object, e.g. of a core the same body
+  // made: it joins that object, the first one met in raster order. (Within one blob every share
+  // belongs to an object that has pixels already, so no id is taken twice.) Any other body is an
+  // object of its own.
+  std::vector<std::int32_t>& id_of = buffers.id_of_body;
+  id_of.assign(static_cast<std::size_t>(count) + 1, 0);
+  for (const std::int32_t i : gaps) {
+    if (state[i] != kInFront || body[i] == 0) continue;
     std::int32_t& id = id_of[static_cast<std::size_t>(body[i])];
     const int u = i % width;
     const int v = i / width;
@@ -118,8 +123,10 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
   for (std::size_t c = 1; c < id_of.size(); ++c) {
     if (id_of[c] == 0) id_of[c] = next_id++;
   }
-  for (const std::int32_t i : buffers.gaps) {
-    if (in_front[i] != 0 && body[i] != 0) placed[i] = id_of[static_cast<std::size_t>(body[i])];
+  for (const std::int32_t i : gaps) {
+    if (state[i] == kKept) continue;
+    const bool body_pixel = state[i] == kInFront && body[i] != 0;
+    nearest[i] = body_pixel ? id_of[static_cast<std::size_t>(body[i])] : 0;
   }
   return next_id;
 }

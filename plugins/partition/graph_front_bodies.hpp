@@ -37,9 +37,9 @@ void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t
 // Images reused from frame to frame (one per stage instance).
 struct FrontBodyBuffers {
   std::vector<std::int32_t> gaps;
-  cv::Mat nearest;
-  cv::Mat in_front;
+  cv::Mat state;
   cv::Mat body;
+  std::vector<std::int32_t> id_of_body;
   algo::ComponentLabeler components;
 };
 

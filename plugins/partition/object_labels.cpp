@@ -58,13 +58,18 @@ void collect_blob_gaps(const cv::Mat& objects, const cv::Mat& blobs,
 
 void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs_in, std::int32_t next_id) {
   const cv::Mat blobs = blobs_in.isContinuous() ? blobs_in : blobs_in.clone();
+  std::vector<std::int32_t> gaps;
+  collect_blob_gaps(objects, blobs, gaps);
+  fill_blob_gaps(objects, blobs, next_id, gaps);
+}
+
+void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs, std::int32_t next_id,
+                    std::span<const std::int32_t> gaps) {
+  if (gaps.empty()) return;
   auto* labels = objects.ptr<std::int32_t>();
   const auto* blob = blobs.ptr<std::int32_t>();
   const int width = objects.cols;
   const int height = objects.rows;
-  std::vector<std::int32_t> gaps;
-  collect_blob_gaps(objects, blobs, gaps);
-  if (gaps.empty()) return;
 
   // The growth starts from the labelled pixels next to a gap, in raster order. A labelled pixel
   // with no gap among its 8 neighbours would label nothing when its turn came (labels are only

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
+#include <span>
 #include <vector>
 
 namespace facet::partition {
@@ -13,6 +14,10 @@ namespace facet::partition {
 // blob. A connected part of a blob that reaches no claimed pixel becomes an object of its own,
 // with ids from `next_id` on. Pixels outside every blob stay 0.
 void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs, std::int32_t next_id);
+
+// The same, for `gaps` that collect_blob_gaps found in `objects` (both images continuous).
+void fill_blob_gaps(cv::Mat& objects, const cv::Mat& blobs, std::int32_t next_id,
+                    std::span<const std::int32_t> gaps);
 
 // The flat indices, ascending, of the pixels of a blob without an object label (both images
 // CV_32SC1, continuous, of one size).
