@@ -25,6 +25,8 @@ sweeps=(
   blobs.min_raised_fraction=0.4:0.6:0.05
   patches.min_size_reference_depth_m=0.8:1.2:0.1
   patches.min_size_far_px=40:60:5
+  objects.front_body_margin_m=0.012:0.018:0.003
+  objects.front_body_face_rms_at_1m_m=0.0009:0.0013:0.0002
 )
 # Only the thresholds whose names contain this (all when empty), e.g. ONLY=patches.
 only="${ONLY:-}"
