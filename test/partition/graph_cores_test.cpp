@@ -6,6 +6,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "left_over_scene.hpp"
 #include "partition/object_labels.hpp"
 
 namespace facet::partition {
@@ -13,29 +14,12 @@ namespace {
 
 constexpr double kFx = 525.0;
 
-// One blob (id 1) over the whole image, every point at `z_m`; the left `claimed_cols` columns
-// belong to object 1, the rest is unclaimed.
-struct Scene {
-  cv::Mat blobs;
-  cv::Mat objects;
-  cv::Mat points;
-};
-
-Scene scene(int width_px, int height_px, int claimed_cols, float z_m) {
-  Scene s;
-  s.blobs = cv::Mat(height_px, width_px, CV_32SC1, cv::Scalar(1));
-  s.objects = cv::Mat::zeros(height_px, width_px, CV_32SC1);
-  s.objects.colRange(0, claimed_cols).setTo(1);
-  s.points = cv::Mat(height_px, width_px, CV_32FC3, cv::Scalar(0.0F, 0.0F, z_m));
-  return s;
-}
-
 const CoreRule kRule{8.0, 0.03, 20, 0.01};
 
 TEST(UnclaimedCores, AWideRegionFarAwayBecomesAnObject) {
   CoreBuffers buffers;
   // 40 px of unclaimed columns beside the object: a 40 x 40 square of 13 cm at 1.7 m.
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   EXPECT_EQ(claim_unclaimed_cores(s.objects, s.blobs, s.points, kFx, {}, kRule, buffers, 2), 3);
   EXPECT_EQ(s.objects.at<std::int32_t>(20, 60), 2);  // the core's middle
   fill_blob_gaps(s.objects, s.blobs, 3);
@@ -48,7 +32,7 @@ TEST(UnclaimedCores, AWideRegionFarAwayBecomesAnObject) {
 TEST(UnclaimedCores, AnEdgeBandJoinsItsNeighbours) {
   CoreBuffers buffers;
   // A band 12 px wide between two claimed regions: no pixel is 8 px from both.
-  Scene s = scene(80, 40, 30, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 30, 1.7F);
   s.objects.colRange(42, 80).setTo(2);
   EXPECT_EQ(claim_unclaimed_cores(s.objects, s.blobs, s.points, kFx, {}, kRule, buffers, 3), 3);
   fill_blob_gaps(s.objects, s.blobs, 3);
@@ -60,7 +44,7 @@ TEST(UnclaimedCores, ARegionWideInPixelsButNarrowInMetresJoinsItsBody) {
   CoreBuffers buffers;
   // The same 40 x 40 square at 0.5 m is 3.8 cm across: its widest point is 1.9 cm from the
   // border, under the 3 cm a core needs (a near face with holes, not a body).
-  Scene s = scene(80, 40, 40, 0.5F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 0.5F);
   EXPECT_EQ(claim_unclaimed_cores(s.objects, s.blobs, s.points, kFx, {}, kRule, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects == 2), 0);
   // With the metric floor off it is a body.
@@ -73,7 +57,7 @@ TEST(UnclaimedCores, ACoreOnThePlaneOfAFaceBesideItIsThatFace) {
   CoreBuffers buffers;
   // The claimed half is node 0, a plane z = 1.7 m facing the camera. The unclaimed half lies on
   // that plane: the rest of the face. Raised 5 cm towards the camera it is a body in front.
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   cv::Mat node_of_pixel(s.objects.size(), CV_32SC1, cv::Scalar(-1));
   node_of_pixel.colRange(0, 40).setTo(0);
   FittedPlane plane;
@@ -86,7 +70,7 @@ TEST(UnclaimedCores, ACoreOnThePlaneOfAFaceBesideItIsThatFace) {
   s.points.colRange(40, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.65F));
   EXPECT_EQ(claim_unclaimed_cores(s.objects, s.blobs, s.points, kFx, faces, kRule, buffers, 2), 3);
   // A curved neighbour (no plane) is no evidence either way: the core is a body.
-  Scene t = scene(80, 40, 40, 1.7F);
+  LeftOverScene t = left_over_scene(80, 40, 40, 1.7F);
   const std::vector<FittedPlane> curved{FittedPlane{}};
   EXPECT_EQ(claim_unclaimed_cores(t.objects, t.blobs, t.points, kFx,
                                   ClaimedFaces{&node_of_pixel, &curved}, kRule, buffers, 2),
@@ -95,7 +79,7 @@ TEST(UnclaimedCores, ACoreOnThePlaneOfAFaceBesideItIsThatFace) {
 
 TEST(UnclaimedCores, OffLeavesEveryPixelAsItWas) {
   CoreBuffers buffers;
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   const cv::Mat before = s.objects.clone();
   EXPECT_EQ(claim_unclaimed_cores(s.objects, s.blobs, s.points, kFx, {}, CoreRule{0.0, 0.02, 20},
                                   buffers, 2),
@@ -105,7 +89,7 @@ TEST(UnclaimedCores, OffLeavesEveryPixelAsItWas) {
 
 TEST(UnclaimedCores, PixelsOutsideEveryBlobAreNeverCores) {
   CoreBuffers buffers;
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.blobs.colRange(40, 80).setTo(0);
   EXPECT_EQ(claim_unclaimed_cores(s.objects, s.blobs, s.points, kFx, {}, kRule, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 80)), 0);

@@ -7,27 +7,11 @@
 #include <limits>
 #include <opencv2/core.hpp>
 
+#include "left_over_scene.hpp"
 #include "partition/object_labels.hpp"
 
 namespace facet::partition {
 namespace {
-
-// One blob (id 1) over the whole image, every point at `z_m`; the left `claimed_cols` columns
-// belong to object 1 (a face), the rest is left over.
-struct Scene {
-  cv::Mat blobs;
-  cv::Mat objects;
-  cv::Mat points;
-};
-
-Scene scene(int width_px, int height_px, int claimed_cols, float z_m) {
-  Scene s;
-  s.blobs = cv::Mat(height_px, width_px, CV_32SC1, cv::Scalar(1));
-  s.objects = cv::Mat::zeros(height_px, width_px, CV_32SC1);
-  s.objects.colRange(0, claimed_cols).setTo(1);
-  s.points = cv::Mat(height_px, width_px, CV_32FC3, cv::Scalar(0.0F, 0.0F, z_m));
-  return s;
-}
 
 // The plane z = z_m, facing the camera.
 FittedPlane facing_plane(float z_m) {
@@ -51,7 +35,7 @@ const FrontBodyRule kRule{0.015, 30, 0.003, 0.0011};
 TEST(FrontBodies, PixelsInFrontOfAFlatFaceAreABodyOfTheirOwn) {
   FrontBodyBuffers buffers;
   // Columns 40-49 continue the face (on its plane), columns 50-79 stand 5 cm in front of it.
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.65F));
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 3);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(50, 80) != 2), 0);
@@ -62,7 +46,7 @@ TEST(FrontBodies, PixelsInFrontOfAFlatFaceAreABodyOfTheirOwn) {
 TEST(FrontBodies, PixelsOnOrBehindTheFaceAreItsObject) {
   FrontBodyBuffers buffers;
   // A side face seen past the edge of a top face lies behind the top's plane.
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points.colRange(60, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.8F));
   // 1 cm in front: within the margin.
   s.points.colRange(40, 50).setTo(cv::Scalar(0.0F, 0.0F, 1.69F));
@@ -73,7 +57,7 @@ TEST(FrontBodies, PixelsOnOrBehindTheFaceAreItsObject) {
 TEST(FrontBodies, ASmallBodyIsLeftForTheFill) {
   FrontBodyBuffers buffers;
   // 5 x 5 = 25 pixels in front, fewer than the 30 a body needs.
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points(cv::Rect(60, 10, 5, 5)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects == 0), 25);
@@ -83,7 +67,7 @@ TEST(FrontBodies, ASmallBodyIsLeftForTheFill) {
 
 TEST(FrontBodies, AnObjectWithoutFlatFacesIsLeftAlone) {
   FrontBodyBuffers buffers;
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   const cv::Mat before = s.objects.clone();
   const FacesOfObject none(3);
@@ -93,7 +77,7 @@ TEST(FrontBodies, AnObjectWithoutFlatFacesIsLeftAlone) {
 
 TEST(FrontBodies, OffLeavesEveryPixelAsItWas) {
   FrontBodyBuffers buffers;
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   const cv::Mat before = s.objects.clone();
   const FrontBodyRule off{0.0, 30, 0.003, 0.0011};
@@ -103,7 +87,7 @@ TEST(FrontBodies, OffLeavesEveryPixelAsItWas) {
 
 TEST(FrontBodies, PixelsWithoutAPointOrOutsideEveryBlobAreNotTouched) {
   FrontBodyBuffers buffers;
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   s.points.colRange(40, 50).setTo(cv::Scalar::all(std::numeric_limits<float>::quiet_NaN()));
   s.blobs.colRange(70, 80).setTo(0);
@@ -117,7 +101,7 @@ TEST(FrontBodies, ABodyTouchingAnotherObjectsShareJoinsThatObject) {
   FrontBodyBuffers buffers;
   // Columns 70-79 are object 2 (say a core of the body); columns 40-69 stand in front of object
   // 1's face. Those nearer object 2 are its share already; the rest touch that share.
-  Scene s = scene(80, 40, 40, 1.7F);
+  LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.objects.colRange(70, 80).setTo(2);
   s.points.colRange(40, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 3), 3);
