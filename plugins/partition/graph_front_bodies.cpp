@@ -52,12 +52,11 @@ void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t
 std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const cv::Mat& points,
                                    const FacesOfObject& faces, const FrontBodyRule& rule,
                                    FrontBodyBuffers& buffers, std::int32_t next_id) {
-  if (rule.margin_m <= 0.0) return next_id;
   // The work is on the left-over pixels only, a few per cent of the image, and on the rectangle
   // around them for the bodies' labelling.
   std::vector<std::int32_t>& gaps = buffers.gaps;
   collect_blob_gaps(objects, blobs, gaps);
-  if (gaps.empty()) return next_id;
+  if (rule.margin_m <= 0.0 || gaps.empty()) return next_id;
   const int width = objects.cols;
   cv::Point low(width, objects.rows);
   cv::Point high(0, 0);
@@ -123,11 +122,15 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
   for (std::size_t c = 1; c < id_of.size(); ++c) {
     if (id_of[c] == 0) id_of[c] = next_id++;
   }
+  // Undo the sharing out where nothing was decided, and keep those pixels as the gaps left.
+  std::size_t left = 0;
   for (const std::int32_t i : gaps) {
     if (state[i] == kKept) continue;
     const bool body_pixel = state[i] == kInFront && body[i] != 0;
     nearest[i] = body_pixel ? id_of[static_cast<std::size_t>(body[i])] : 0;
+    if (!body_pixel) gaps[left++] = i;
   }
+  gaps.resize(left);
   return next_id;
 }
 

@@ -52,7 +52,8 @@ struct FrontBodyBuffers {
 //   the object of their blob whose share (pixels, or left-over pixels nearest to it) they touch;
 // - any other pixel is the object's now, so that a new body does not grow into it later.
 // Pixels of smaller bodies, without a point, or nearest to an object without flat faces stay 0
-// for fill_blob_gaps. Returns the next free id.
+// for fill_blob_gaps; on return `buffers.gaps` lists them (collect_blob_gaps' list of what is
+// left), so that the fill need not search the image again. Returns the next free id.
 std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const cv::Mat& points,
                                    const FacesOfObject& faces, const FrontBodyRule& rule,
                                    FrontBodyBuffers& buffers, std::int32_t next_id);

@@ -390,8 +390,10 @@ void PartitionGraph::process(ProcessContext& ctx) {
     flat_faces_of_objects(graph_, group, next_id, front_rule_, faces_of_object_);
     next_id = claim_bodies_in_front(objects, blobs.labels, points.points, faces_of_object_,
                                     front_rule_, front_buffers_, next_id);
+    fill_blob_gaps(objects, blobs.labels, next_id, front_buffers_.gaps);
+  } else {
+    fill_blob_gaps(objects, blobs.labels, next_id);
   }
-  fill_blob_gaps(objects, blobs.labels, next_id);
   const std::int32_t count = relabel_in_raster_order(objects);
   LabelImage object_image = LabelImage::make(blobs, std::move(objects), count);
   ctx.metric("objects", count);

@@ -61,6 +61,7 @@ TEST(FrontBodies, ASmallBodyIsLeftForTheFill) {
   s.points(cv::Rect(60, 10, 5, 5)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects == 0), 25);
+  EXPECT_EQ(buffers.gaps.size(), 25U);  // what is left, listed for the fill
   fill_blob_gaps(s.objects, s.blobs, 2);
   EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
 }
@@ -93,6 +94,7 @@ TEST(FrontBodies, PixelsWithoutAPointOrOutsideEveryBlobAreNotTouched) {
   s.blobs.colRange(70, 80).setTo(0);
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 3);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 50)), 0);  // no point: left for the fill
+  EXPECT_EQ(buffers.gaps.size(), 400U);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(50, 70) != 2), 0);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(70, 80)), 0);
 }
