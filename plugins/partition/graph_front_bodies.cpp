@@ -1,6 +1,7 @@
 #include "partition/graph_front_bodies.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <opencv2/core.hpp>
 
@@ -14,11 +15,26 @@ constexpr std::uint8_t kUndecided = 0;  // left for fill_blob_gaps
 constexpr std::uint8_t kInFront = 1;    // a body's, if its body is large enough
 constexpr std::uint8_t kKept = 2;       // the object's it is nearest to
 
-bool in_front_of_any(const std::vector<FittedPlane>& faces, const cv::Vec3f& point,
-                     double margin_m) {
-  return std::any_of(faces.begin(), faces.end(), [&](const FittedPlane& face) {
+bool in_front_of_any(const FlatFaces& faces, const cv::Vec3f& point, double margin_m) {
+  return std::any_of(faces.planes.begin(), faces.planes.end(), [&](const FittedPlane& face) {
     return face.signed_distance_m(point[0], point[1], point[2]) > margin_m;
   });
+}
+
+using PixelBox = std::array<std::int32_t, 4>;  // u_min, v_min, u_max, v_max
+
+// Whether `outer` reaches as far as `inner` on all four sides, short of it by a tenth of
+// `inner`'s size at most: where a container's wall meets its rim, the wall lies within the
+// margin of the floor's plane, and its last rows are not in front of it.
+bool reaches_around(const PixelBox& outer, const PixelBox& inner) {
+  const std::int32_t slack_u = (inner[2] - inner[0]) / 10;
+  const std::int32_t slack_v = (inner[3] - inner[1]) / 10;
+  return outer[0] <= inner[0] + slack_u && outer[1] <= inner[1] + slack_v &&
+         outer[2] >= inner[2] - slack_u && outer[3] >= inner[3] - slack_v;
+}
+
+void extend(PixelBox& box, std::int32_t u, std::int32_t v) {
+  box = {std::min(box[0], u), std::min(box[1], v), std::max(box[2], u), std::max(box[3], v)};
 }
 
 }  // namespace
@@ -31,21 +47,29 @@ void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t
                            std::int32_t id_count, const FrontBodyRule& rule, FacesOfObject& faces) {
   const auto ids = static_cast<std::size_t>(std::max(id_count, 0));
   faces.resize(ids);
-  for (auto& planes : faces)
-    planes.clear();
+  for (FlatFaces& object : faces)
+    object = FlatFaces{};
   std::vector<bool> curved(ids, false);
   for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
     const GraphNode& node = graph.nodes[i];
     const auto id = static_cast<std::size_t>(1 + group[i]);
     if (node.segment < 0 || id >= ids) continue;  // a patchless blob has no face
     if (node.plane.valid && rule.is_flat_face(node.plane_rms_m, node.plane.centroid_m.z())) {
-      faces[id].push_back(node.plane);
+      FlatFaces& object = faces[id];
+      if (object.empty()) {
+        object.box_px = node.box_px;
+      } else {
+        object.box_px = {
+            std::min(object.box_px[0], node.box_px[0]), std::min(object.box_px[1], node.box_px[1]),
+            std::max(object.box_px[2], node.box_px[2]), std::max(object.box_px[3], node.box_px[3])};
+      }
+      object.planes.push_back(node.plane);
     } else {
       curved[id] = true;
     }
   }
   for (std::size_t id = 0; id < ids; ++id) {
-    if (curved[id]) faces[id].clear();
+    if (curved[id]) faces[id] = FlatFaces{};
   }
 }
 
@@ -119,6 +143,27 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
       }
     }
   }
+  // The bodies cut from one object that together reach around its faces are its walls (a
+  // container's, seen as a ring or in pieces), not bodies standing on it: they stay its own.
+  constexpr std::int32_t kAroundItsObject = -1;
+  if (rule.keep_enclosing && count > 0) {
+    std::vector<PixelBox>& box = buffers.box_of_bodies;
+    std::vector<std::int32_t>& object_of = buffers.object_of_body;
+    box.assign(faces.size(), {width, objects.rows, -1, -1});
+    object_of.assign(id_of.size(), 0);
+    for (const std::int32_t i : gaps) {
+      if (state[i] != kInFront || body[i] == 0) continue;
+      const auto c = static_cast<std::size_t>(body[i]);
+      if (id_of[c] != 0) continue;  // joins another object's share
+      if (object_of[c] == 0) object_of[c] = nearest[i];
+      extend(box[static_cast<std::size_t>(nearest[i])], i % width, i / width);
+    }
+    for (std::size_t c = 1; c < id_of.size(); ++c) {
+      const auto object = static_cast<std::size_t>(object_of[c]);
+      if (id_of[c] == 0 && reaches_around(box[object], faces[object].box_px))
+        id_of[c] = kAroundItsObject;
+    }
+  }
   for (std::size_t c = 1; c < id_of.size(); ++c) {
     if (id_of[c] == 0) id_of[c] = next_id++;
   }
@@ -127,6 +172,7 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
   for (const std::int32_t i : gaps) {
     if (state[i] == kKept) continue;
     const bool body_pixel = state[i] == kInFront && body[i] != 0;
+    if (body_pixel && id_of[static_cast<std::size_t>(body[i])] == kAroundItsObject) continue;
     nearest[i] = body_pixel ? id_of[static_cast<std::size_t>(body[i])] : 0;
     if (!body_pixel) gaps[left++] = i;
   }

@@ -5,6 +5,7 @@
 // faces, belong to another body: a can on a book or a box on a box far from the camera, where
 // neither grew a patch of its own and both are one blob.
 
+#include <array>
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
 #include <span>
@@ -23,6 +24,10 @@ struct FrontBodyRule {
   // ... or within this times (depth / 1 m)²: a flat face's disparity steps alone give it an RMS
   // that grows with the square of its depth (3.3 mm at 2 m for a Kinect).
   double face_rms_at_1m_m = 0.0;
+  // Bodies of one object that together reach around its faces in the image (their box holds the
+  // faces' box, short of it by a tenth at most) stand around them, not on them: the walls of an
+  // open container whose only patch is its floor. They stay the object's.
+  bool keep_enclosing = true;
 
   bool is_flat_face(double plane_rms_m, double depth_m) const;
 };
@@ -30,7 +35,12 @@ struct FrontBodyRule {
 // Per object id (index), the planes of its faces when all of them are flat; empty for an object
 // with a curved face (a bowl's inside lies in front of its floor: no convex object) and for ids
 // without a node. `group` gives each node's object as id - 1, as GraphCut::groups does.
-using FacesOfObject = std::vector<std::vector<FittedPlane>>;
+struct FlatFaces {
+  std::vector<FittedPlane> planes;
+  std::array<std::int32_t, 4> box_px{0, 0, -1, -1};  // of the faces: u_min, v_min, u_max, v_max
+  bool empty() const { return planes.empty(); }
+};
+using FacesOfObject = std::vector<FlatFaces>;
 void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t> group,
                            std::int32_t id_count, const FrontBodyRule& rule, FacesOfObject& faces);
 
@@ -40,6 +50,8 @@ struct FrontBodyBuffers {
   cv::Mat state;
   cv::Mat body;
   std::vector<std::int32_t> id_of_body;
+  std::vector<std::int32_t> object_of_body;
+  std::vector<std::array<std::int32_t, 4>> box_of_bodies;  // per object id
   algo::ComponentLabeler components;
 };
 
@@ -49,7 +61,8 @@ struct FrontBodyBuffers {
 // When that object has flat faces (`faces`, by id):
 // - a pixel more than `margin_m` in front of one of their planes is a body's. Connected bodies
 //   (8 neighbours) of at least `min_px` pixels become objects, ids from `next_id` on, or join
-//   the object of their blob whose share (pixels, or left-over pixels nearest to it) they touch;
+//   the object of their blob whose share (pixels, or left-over pixels nearest to it) they touch,
+//   or stay the object's when they reach around its faces (`keep_enclosing`);
 // - any other pixel is the object's now, so that a new body does not grow into it later.
 // Pixels of smaller bodies, without a point, or nearest to an object without flat faces stay 0
 // for fill_blob_gaps; on return `buffers.gaps` lists them (collect_blob_gaps' list of what is

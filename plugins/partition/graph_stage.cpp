@@ -251,6 +251,13 @@ const Param<double> kFrontBodyFaceRmsAt1mM{
      .max = 1.0,
      .origin = "Kinect disparity steps (0.8 mm RMS at 1 m); 0.0008-0.0015 alike on "
                "generated sets"}};
+const Param<bool> kFrontBodyKeepEnclosing{
+    "front_body_keep_enclosing", true,
+    "With front_body_margin_m: the bodies cut from one object that together reach around "
+    "its faces in the image (their box holds the faces' box, short of it by a tenth of its "
+    "size at most) are its walls, not bodies standing on it, and stay its own: an open "
+    "container whose only patch is its floor. A can on a book stands on one side of the "
+    "book's top or inside it, never around it."};
 const Param<bool> kEmitGraph{
     "emit_graph", false,
     "Fill the graph output. The runtime does not tell a stage whether an output is "
@@ -298,7 +305,8 @@ StageSpec PartitionGraph::spec() {
                kCurvatureMinShare, kCurvatureMinAxisRatio, kCurvatureSamples, kCurvatureMaxGapM,
                kCurvatureMaxOccludedGapM, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
                kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM,
-               kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM, kEmitGraph)
+               kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM, kFrontBodyKeepEnclosing,
+               kEmitGraph)
       .concurrency(Concurrency::clonable);
 }
 
@@ -306,7 +314,7 @@ PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(kEmitGraph(pa
   core_rule_ = {kUnclaimedCoreRadiusPx(params), kUnclaimedCoreRadiusM(params),
                 kUnclaimedCoreMinPx(params), kConvexToleranceM(params)};
   front_rule_ = {kFrontBodyMarginM(params), kFrontBodyMinPx(params), kPlanarMaxRmsM(params),
-                 kFrontBodyFaceRmsAt1mM(params)};
+                 kFrontBodyFaceRmsAt1mM(params), kFrontBodyKeepEnclosing(params)};
   rule_.nodes = {kMinPatchPx(params), kPlanarMaxRmsM(params)};
   rule_.convex = kConvex(params);
   rule_.convex_rule = {kConvexToleranceM(params), kConvexMinBehindShare(params),

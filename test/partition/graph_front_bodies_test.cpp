@@ -26,7 +26,8 @@ FittedPlane facing_plane(float z_m) {
 // Object 1 has the plane z = 1.7 m as its one flat face; ids 0 and 2 have none.
 FacesOfObject one_face() {
   FacesOfObject faces(3);
-  faces[1].push_back(facing_plane(1.7F));
+  faces[1].planes.push_back(facing_plane(1.7F));
+  faces[1].box_px = {0, 0, 39, 39};
   return faces;
 }
 
@@ -112,6 +113,66 @@ TEST(FrontBodies, ABodyTouchingAnotherObjectsShareJoinsThatObject) {
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 80) != 2), 0);
 }
 
+// A container whose only patch is its floor: object 1 is the floor, rows and columns 30-49 on
+// the plane z = 1.7 m; its walls, all around it out to 20-59, stand 10 cm in front of that
+// plane, in two pieces parted by a strip of columns 38-41 on the plane above and below the floor.
+LeftOverScene container_scene() {
+  LeftOverScene s = left_over_scene(80, 80, 0, 1.7F);
+  s.objects(cv::Rect(30, 30, 20, 20)).setTo(1);
+  s.points(cv::Rect(20, 20, 40, 40)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  s.points(cv::Rect(38, 20, 4, 40)).setTo(cv::Scalar(0.0F, 0.0F, 1.7F));
+  return s;
+}
+
+FacesOfObject floor_face() {
+  FacesOfObject faces(2);
+  faces[1].planes.push_back(facing_plane(1.7F));
+  faces[1].box_px = {30, 30, 49, 49};
+  return faces;
+}
+
+TEST(FrontBodies, WallsAroundTheOnlyFaceStayItsObject) {
+  FrontBodyBuffers buffers;
+  LeftOverScene s = container_scene();
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), kRule, buffers, 2),
+            2);
+  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+  EXPECT_TRUE(buffers.gaps.empty());
+}
+
+TEST(FrontBodies, WithoutKeepEnclosingTheWallsAreCutOff) {
+  FrontBodyBuffers buffers;
+  LeftOverScene s = container_scene();
+  FrontBodyRule rule = kRule;
+  rule.keep_enclosing = false;
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), rule, buffers, 2), 4);
+  EXPECT_EQ(cv::countNonZero(s.objects(cv::Rect(20, 20, 10, 40)) == 1), 0);
+}
+
+TEST(FrontBodies, WallsOnOneSideOnlyAreABody) {
+  // The ring without its right half (columns 42-59 back on the floor's plane): what is left
+  // stands beside the floor, not around it, like a can at the edge of a book.
+  FrontBodyBuffers buffers;
+  LeftOverScene s = container_scene();
+  s.points(cv::Rect(42, 20, 18, 40)).setTo(cv::Scalar(0.0F, 0.0F, 1.7F));
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), kRule, buffers, 2),
+            3);
+  EXPECT_EQ(cv::countNonZero(s.objects(cv::Rect(20, 20, 10, 40)) != 2), 0);
+}
+
+TEST(FrontBodies, ABodyInTheMiddleOfAFaceIsCutOff) {
+  // A can standing in the middle of a book: the face's box holds the body's, not the reverse.
+  FrontBodyBuffers buffers;
+  LeftOverScene s = left_over_scene(80, 40, 80, 1.7F);
+  s.objects(cv::Rect(35, 15, 10, 10)).setTo(0);
+  s.points(cv::Rect(35, 15, 10, 10)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
+  FacesOfObject faces(2);
+  faces[1].planes.push_back(facing_plane(1.7F));
+  faces[1].box_px = {0, 0, 79, 39};
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, faces, kRule, buffers, 2), 3);
+  EXPECT_EQ(cv::countNonZero(s.objects == 2), 100);
+}
+
 TEST(FrontBodies, AFarFaceIsFlatByTheRmsItsDisparityStepsGive) {
   // 3.5 mm RMS: curved at 1 m (3 mm), a flat face at 2 m (1.1 mm x 2^2 = 4.4 mm).
   EXPECT_FALSE(kRule.is_flat_face(0.0035, 1.0));
@@ -136,8 +197,27 @@ TEST(FrontBodies, AnObjectWithACurvedFaceHasNoFlatFaces) {
   ASSERT_EQ(faces.size(), 4U);
   EXPECT_TRUE(faces[0].empty());
   EXPECT_TRUE(faces[1].empty());
-  EXPECT_EQ(faces[2].size(), 1U);
+  EXPECT_EQ(faces[2].planes.size(), 1U);
   EXPECT_TRUE(faces[3].empty());
+}
+
+TEST(FrontBodies, AnObjectsFacesAreBoxedTogether) {
+  // Nodes 0 and 1 (both flat) are object 1: its box holds both of theirs.
+  GraphNodes graph;
+  graph.nodes.resize(2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    graph.nodes[i].segment = static_cast<std::int32_t>(i);
+    graph.nodes[i].plane = facing_plane(1.0F);
+    graph.nodes[i].plane_rms_m = 0.001;
+  }
+  graph.nodes[0].box_px = {0, 0, 10, 10};
+  graph.nodes[1].box_px = {5, 20, 30, 25};
+  const std::vector<std::int32_t> group{0, 0};
+  FacesOfObject faces;
+  flat_faces_of_objects(graph, group, 2, kRule, faces);
+  ASSERT_EQ(faces.size(), 2U);
+  EXPECT_EQ(faces[1].planes.size(), 2U);
+  EXPECT_EQ(faces[1].box_px, (std::array<std::int32_t, 4>{0, 0, 30, 25}));
 }
 
 }  // namespace
