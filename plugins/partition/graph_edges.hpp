@@ -1,7 +1,7 @@
 #pragma once
 // The edges of the surface-patch graph (partition.graph): pairs of nodes that belong to one
 // object, and the feature that found each pair. One file per feature: graph_edges_convex.cpp,
-// graph_edges_coplanar.cpp, graph_edges_curvature.cpp.
+// graph_edges_coplanar.cpp, graph_edges_curvature.cpp, graph_edges_floor.cpp.
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
@@ -14,7 +14,7 @@
 
 namespace facet::partition {
 
-enum class EdgeFeature : std::uint8_t { convex, coplanar, curvature };
+enum class EdgeFeature : std::uint8_t { convex, coplanar, curvature, floor };
 
 std::string_view feature_name(EdgeFeature feature);
 
@@ -84,5 +84,22 @@ struct CurvatureRule {
 void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
                          const FrameImages& images, const CoplanarRule& occlusion,
                          const CurvatureRule& rule, std::vector<GraphEdge>& edges);
+
+struct FloorRule {
+  double min_rise_m = 0.01;     // the wall's centroid at least this in front of the floor's plane
+  double min_wrap_deg = 200.0;  // the wall's points wrap around the floor's centre this far
+  std::int32_t max_samples = 256;  // wall points used for the wrap
+};
+
+// floor: a planar patch and a larger curved one of its blob that touch, where the curved one
+// rises in front of the planar one's plane and its points, seen in that plane, turn around the
+// planar one's centroid (seen at its own mean pixel) by more than half a turn: the flat floor of
+// a pot, bowl or cup and the inside of its wall, which meet at a concave crease that the convex
+// feature rightly refuses. The size test matters as much as the turn: seen at a slant, a cup in
+// front of a box's face can turn around the face's centre in the face's plane too (mOSD
+// learn42), but the face is then the larger, and a container's floor seldom is.
+void add_floor_edges(const BlobSegments& points, const GraphNodes& graph, const FrameImages& images,
+                     const TouchingNodes& touching, const FloorRule& rule,
+                     std::vector<GraphEdge>& edges);
 
 }  // namespace facet::partition

@@ -13,6 +13,8 @@ std::string_view feature_name(EdgeFeature feature) {
       return "coplanar";
     case EdgeFeature::curvature:
       return "curvature";
+    case EdgeFeature::floor:
+      return "floor";
   }
   return "?";
 }

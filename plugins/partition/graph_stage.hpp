@@ -25,6 +25,8 @@ struct GraphRule {
   CoplanarRule coplanar_rule;
   bool curvature = true;
   CurvatureRule curvature_rule;
+  bool floor = true;
+  FloorRule floor_rule;
   CutRule cut;
 };
 

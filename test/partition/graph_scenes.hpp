@@ -86,10 +86,12 @@ inline void add_table(const Tabletop& table, SceneBuilder& builder) {
 
 // An open hemispherical bowl standing on the table: outer radius `radius_m`, wall `wall_m`, its
 // rim at height radius_m above the table. Faces: outside and rim (one face, as grow.surfaces
-// would give the thin rim to a neighbour) = first_face, inside = first_face + 1.
+// would give the thin rim to a neighbour) = first_face, inside = first_face + 1. With
+// `floor_depth_m` > 0 the inside has a flat floor that deep below the rim (a pot): face
+// first_face + 2.
 inline void add_bowl(RenderedScene& scene, const Tabletop& table, double x_m, double y_m,
                      double radius_m, double wall_m, std::int32_t object_id,
-                     std::int32_t first_face) {
+                     std::int32_t first_face, double floor_depth_m = 0.0) {
   const Eigen::Isometry3d pose = table.pose(x_m, y_m, radius_m);  // rim centre
   const Eigen::Isometry3d to_local = pose.inverse();
   const double inner_m = radius_m - wall_m;
@@ -111,7 +113,9 @@ inline void add_bowl(RenderedScene& scene, const Tabletop& table, double x_m, do
         if (disc < 0.0) continue;
         for (const double sign : {-1.0, 1.0}) {
           const double t = (-b + sign * std::sqrt(disc)) / d.squaredNorm();
-          if (t > 0.0 && (o + t * d).z() <= 0.0 && t < best) {
+          const double z = (o + t * d).z();
+          const bool under_floor = floor_depth_m > 0.0 && id != first_face && z < -floor_depth_m;
+          if (t > 0.0 && z <= 0.0 && !under_floor && t < best) {
             best = t;
             face = id;
           }
@@ -123,6 +127,16 @@ inline void add_bowl(RenderedScene& scene, const Tabletop& table, double x_m, do
         if (t > 0.0 && rho >= inner_m && rho <= radius_m && t < best) {
           best = t;
           face = first_face;
+        }
+      }
+      if (floor_depth_m > 0.0 && std::abs(d.z()) > 1e-12) {
+        const double t = (-floor_depth_m - o.z()) / d.z();
+        const double rho = (o + t * d).head<2>().norm();
+        const double floor_radius_m =
+            std::sqrt(std::max(inner_m * inner_m - floor_depth_m * floor_depth_m, 0.0));
+        if (t > 0.0 && rho <= floor_radius_m && t < best) {
+          best = t;
+          face = first_face + 2;
         }
       }
       if (face == 0) continue;

@@ -56,6 +56,14 @@ TableScene bowl() {
   return out;
 }
 
+// A pot: a bowl whose inside has a flat floor 4 cm below the rim.
+TableScene pot() {
+  Tabletop t;
+  TableScene out = on_table(t);
+  add_bowl(out.scene, t, 0.0, 0.0, 0.08, 0.006, out.table + 1, 100, 0.04);
+  return out;
+}
+
 // A bowl beside a cylinder it touches: two round objects in one blob.
 TableScene bowl_touching_can() {
   Tabletop t;
@@ -362,6 +370,51 @@ TEST(PartitionGraph, BowlTouchingACanIsTwoObjects) {
   const PartitionInput input = graph_input(s.scene, s.table);
   ASSERT_EQ(count_of(input.blobs), 1);
   const LabelImage objects = run_graph(input);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
+}
+
+TEST(PartitionGraphScenes, APotHasAFlatFloorInsideItsWall) {
+  const TableScene s = pot();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  EXPECT_EQ(count_of(input.blobs), 1);
+  EXPECT_EQ(count_of(input.patches), 3);  // outside (with the rim), inside wall, floor
+}
+
+TEST(PartitionGraph, APotsFloorAndWallAreOneObject) {
+  // Floor and wall meet at a concave crease: no convex edge, and no quadric fits both.
+  const TableScene s = pot();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(objects.count, 1);
+  // To the inside of the wall, and to the outside, whose front rim hides the floor's front edge.
+  EXPECT_EQ(metric_value(metrics, "floor_edges"), 2.0);
+  EXPECT_EQ(run_graph(input, {{"floor", false}}).count, 2);
+}
+
+TEST(PartitionGraph, AWallThatDoesNotWrapTheFloorIsNotItsWall) {
+  const TableScene s = pot();
+  const PartitionInput input = graph_input(s.scene, s.table);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {{"floor_min_wrap_deg", 359.0}}, &metrics);
+  EXPECT_EQ(metric_value(metrics, "floor_edges"), 0.0);
+  EXPECT_EQ(objects.count, 2);
+}
+
+TEST(PartitionGraph, ACanBeforeABoxFaceIsNoContainerWall) {
+  // The can stands on the table in front of a wide, tall box and touches it: the box's front
+  // face is a planar patch around the can, the can's side a curved one rising in front of it,
+  // wrapping the face's centre in the face's plane. The face is larger than the can's side, as
+  // no container's floor is larger than the inside of its wall.
+  Tabletop t;
+  t.box(0.0, 0.06, {0.12, 0.04, 0.09}).cylinder(0.0, -0.015, 0.03, 0.05);
+  const TableScene s = on_table(t);
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(metric_value(metrics, "floor_edges"), 0.0);
   EXPECT_EQ(objects.count, 2);
   EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
 }
