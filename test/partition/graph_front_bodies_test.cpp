@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <limits>
 #include <opencv2/core.hpp>
 
@@ -23,11 +24,12 @@ FittedPlane facing_plane(float z_m) {
   return plane;
 }
 
-// Object 1 has the plane z = 1.7 m as its one flat face; ids 0 and 2 have none.
-FacesOfObject one_face() {
+// Object 1 has the plane z = 1.7 m as its one flat face, seen in the image box `box_px`; ids 0
+// and 2 have none.
+FacesOfObject one_face(const std::array<std::int32_t, 4>& box_px = {0, 0, 39, 39}) {
   FacesOfObject faces(3);
   faces[1].planes.push_back(facing_plane(1.7F));
-  faces[1].box_px = {0, 0, 39, 39};
+  faces[1].box_px = box_px;
   return faces;
 }
 
@@ -125,10 +127,7 @@ LeftOverScene container_scene() {
 }
 
 FacesOfObject floor_face() {
-  FacesOfObject faces(2);
-  faces[1].planes.push_back(facing_plane(1.7F));
-  faces[1].box_px = {30, 30, 49, 49};
-  return faces;
+  return one_face({30, 30, 49, 49});
 }
 
 TEST(FrontBodies, WallsAroundTheOnlyFaceStayItsObject) {
@@ -166,10 +165,9 @@ TEST(FrontBodies, ABodyInTheMiddleOfAFaceIsCutOff) {
   LeftOverScene s = left_over_scene(80, 40, 80, 1.7F);
   s.objects(cv::Rect(35, 15, 10, 10)).setTo(0);
   s.points(cv::Rect(35, 15, 10, 10)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
-  FacesOfObject faces(2);
-  faces[1].planes.push_back(facing_plane(1.7F));
-  faces[1].box_px = {0, 0, 79, 39};
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, faces, kRule, buffers, 2), 3);
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face({0, 0, 79, 39}), kRule,
+                                  buffers, 2),
+            3);
   EXPECT_EQ(cv::countNonZero(s.objects == 2), 100);
 }
 
@@ -181,15 +179,21 @@ TEST(FrontBodies, AFarFaceIsFlatByTheRmsItsDisparityStepsGive) {
   EXPECT_FALSE(kRule.is_flat_face(0.006, 2.0));
 }
 
-TEST(FrontBodies, AnObjectWithACurvedFaceHasNoFlatFaces) {
-  // Nodes 0 and 1 (flat, curved) are object 1; node 2 (flat) object 2; node 3 a patchless blob.
+// `patches` nodes with a patch, each a flat face 1 m away, then `patchless` nodes without one.
+GraphNodes flat_nodes(std::size_t patches, std::size_t patchless = 0) {
   GraphNodes graph;
-  graph.nodes.resize(4);
-  for (std::size_t i = 0; i < 3; ++i) {
+  graph.nodes.resize(patches + patchless);
+  for (std::size_t i = 0; i < patches; ++i) {
     graph.nodes[i].segment = static_cast<std::int32_t>(i);
     graph.nodes[i].plane = facing_plane(1.0F);
     graph.nodes[i].plane_rms_m = 0.001;
   }
+  return graph;
+}
+
+TEST(FrontBodies, AnObjectWithACurvedFaceHasNoFlatFaces) {
+  // Nodes 0 and 1 (flat, curved) are object 1; node 2 (flat) object 2; node 3 a patchless blob.
+  GraphNodes graph = flat_nodes(3, 1);
   graph.nodes[1].plane_rms_m = 0.01;
   const std::vector<std::int32_t> group{0, 0, 1, 2};
   FacesOfObject faces;
@@ -203,13 +207,7 @@ TEST(FrontBodies, AnObjectWithACurvedFaceHasNoFlatFaces) {
 
 TEST(FrontBodies, AnObjectsFacesAreBoxedTogether) {
   // Nodes 0 and 1 (both flat) are object 1: its box holds both of theirs.
-  GraphNodes graph;
-  graph.nodes.resize(2);
-  for (std::size_t i = 0; i < 2; ++i) {
-    graph.nodes[i].segment = static_cast<std::int32_t>(i);
-    graph.nodes[i].plane = facing_plane(1.0F);
-    graph.nodes[i].plane_rms_m = 0.001;
-  }
+  GraphNodes graph = flat_nodes(2);
   graph.nodes[0].box_px = {0, 0, 10, 10};
   graph.nodes[1].box_px = {5, 20, 30, 25};
   const std::vector<std::int32_t> group{0, 0};
