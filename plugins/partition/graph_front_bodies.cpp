@@ -1,7 +1,6 @@
 #include "partition/graph_front_bodies.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <opencv2/core.hpp>
 
@@ -20,8 +19,6 @@ bool in_front_of_any(const FlatFaces& faces, const cv::Vec3f& point, double marg
     return face.signed_distance_m(point[0], point[1], point[2]) > margin_m;
   });
 }
-
-using PixelBox = std::array<std::int32_t, 4>;  // u_min, v_min, u_max, v_max
 
 // Whether `outer` reaches as far as `inner` on all four sides, short of it by a tenth of
 // `inner`'s size at most: where a container's wall meets its rim, the wall lies within the
@@ -56,13 +53,8 @@ void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t
     if (node.segment < 0 || id >= ids) continue;  // a patchless blob has no face
     if (node.plane.valid && rule.is_flat_face(node.plane_rms_m, node.plane.centroid_m.z())) {
       FlatFaces& object = faces[id];
-      if (object.empty()) {
-        object.box_px = node.box_px;
-      } else {
-        object.box_px = {
-            std::min(object.box_px[0], node.box_px[0]), std::min(object.box_px[1], node.box_px[1]),
-            std::max(object.box_px[2], node.box_px[2]), std::max(object.box_px[3], node.box_px[3])};
-      }
+      extend(object.box_px, node.box_px[0], node.box_px[1]);
+      extend(object.box_px, node.box_px[2], node.box_px[3]);
       object.planes.push_back(node.plane);
     } else {
       curved[id] = true;
@@ -149,7 +141,7 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
   if (rule.keep_enclosing && count > 0) {
     std::vector<PixelBox>& box = buffers.box_of_bodies;
     std::vector<std::int32_t>& object_of = buffers.object_of_body;
-    box.assign(faces.size(), {width, objects.rows, -1, -1});
+    box.assign(faces.size(), kNoPixels);
     object_of.assign(id_of.size(), 0);
     for (const std::int32_t i : gaps) {
       if (state[i] != kInFront || body[i] == 0) continue;

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <opencv2/core/mat.hpp>
 #include <span>
 #include <vector>
@@ -35,9 +36,15 @@ struct FrontBodyRule {
 // Per object id (index), the planes of its faces when all of them are flat; empty for an object
 // with a curved face (a bowl's inside lies in front of its floor: no convex object) and for ids
 // without a node. `group` gives each node's object as id - 1, as GraphCut::groups does.
+// An image rectangle, inclusive: u_min, v_min, u_max, v_max. kNoPixels holds none, so that a
+// box grown from it by each pixel or corner added is exactly their bounding box.
+using PixelBox = std::array<std::int32_t, 4>;
+constexpr PixelBox kNoPixels{std::numeric_limits<std::int32_t>::max(),
+                             std::numeric_limits<std::int32_t>::max(), -1, -1};
+
 struct FlatFaces {
   std::vector<FittedPlane> planes;
-  std::array<std::int32_t, 4> box_px{0, 0, -1, -1};  // of the faces: u_min, v_min, u_max, v_max
+  PixelBox box_px = kNoPixels;  // the bounding box of the faces in the image
   bool empty() const { return planes.empty(); }
 };
 using FacesOfObject = std::vector<FlatFaces>;
@@ -51,7 +58,7 @@ struct FrontBodyBuffers {
   cv::Mat body;
   std::vector<std::int32_t> id_of_body;
   std::vector<std::int32_t> object_of_body;
-  std::vector<std::array<std::int32_t, 4>> box_of_bodies;  // per object id
+  std::vector<PixelBox> box_of_bodies;  // per object id
   algo::ComponentLabeler components;
 };
 
