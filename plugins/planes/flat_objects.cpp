@@ -6,6 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "facet/algo/label_runs.hpp"
+
 namespace facet::planes {
 namespace {
 
@@ -38,22 +40,68 @@ float median_height(const cv::Mat& mask, const cv::Mat& height_m, const cv::Mat&
 
 // Per cell: the height above the table of its first pixel (top left) when that is a table pixel
 // (cell_px 1), else 0 (cell_px 0). One pixel in four is enough for a mean over a window, and the
-// pass over the points is the rule's largest cost.
-void sample_cells(const cv::Mat& plane_labels, std::int32_t table_label, const cv::Mat& xyz,
-                  const algo::Plane& table, cv::Mat& height_m, cv::Mat& cell_px) {
+// pass over the points is the rule's largest cost. With rule.max_height_m, a pixel on no plane
+// whose point lies within that height of the table counts too when it is in no patch (an edge
+// pixel) or in a low piece: a piece of a patch a plane cut (`cut_pieces`) with
+// low_patch_fraction of its sampled points that low (a stripe the table's plane cut off the
+// table's patch). An object's own patch never counts: its region would take a ring of table.
+// `cell_patch` keeps those pixels' patch ids, for the give-back.
+void sample_cells(const cv::Mat& plane_labels, std::int32_t table_label, const cv::Mat& left_labels,
+                  std::int32_t patch_count, const std::vector<char>& cut_pieces, const cv::Mat& xyz,
+                  const algo::Plane& table, const FlatObjectRule& rule, cv::Mat& height_m,
+                  cv::Mat& cell_px, cv::Mat& cell_patch, std::vector<std::int64_t>& patch_px,
+                  std::vector<std::int64_t>& low_px, std::vector<char>& low_patch) {
   const cv::Size cells((xyz.cols + kCellPx - 1) / kCellPx, (xyz.rows + kCellPx - 1) / kCellPx);
   height_m.create(cells, CV_32FC1);
   cell_px.create(cells, CV_32FC1);
+  cell_patch.create(cells, CV_32SC1);
+  const bool low_points = rule.max_height_m > 0.0F;
+  patch_px.assign(static_cast<std::size_t>(patch_count) + 1, 0);
+  low_px.assign(static_cast<std::size_t>(patch_count) + 1, 0);
   for (int cv_row = 0; cv_row < cells.height; ++cv_row) {
     const auto* plane = plane_labels.ptr<std::int32_t>(cv_row * kCellPx);
+    const auto* left = left_labels.ptr<std::int32_t>(cv_row * kCellPx);
     const auto* point = xyz.ptr<float>(cv_row * kCellPx);
     auto* height = height_m.ptr<float>(cv_row);
     auto* count = cell_px.ptr<float>(cv_row);
+    auto* patch = cell_patch.ptr<std::int32_t>(cv_row);
     for (int cu = 0; cu < cells.width; ++cu) {
       const int u = cu * kCellPx;
       const bool on_table = plane[u] == table_label;
-      height[cu] = on_table ? table.signed_distance_m(point + 3 * u) : 0.0F;
+      const bool off_planes = low_points && plane[u] == 0 && !std::isnan(point[3 * u + 2]);
+      const float h = on_table || off_planes ? table.signed_distance_m(point + 3 * u) : 0.0F;
+      const bool low = off_planes && std::abs(h) <= rule.max_height_m;
+      if (off_planes) {
+        const auto id = static_cast<std::size_t>(left[u]);
+        ++patch_px[id];
+        low_px[id] += low ? 1 : 0;
+      }
+      height[cu] = on_table || low ? h : 0.0F;
       count[cu] = on_table ? 1.0F : 0.0F;
+      patch[cu] = low ? left[u] : -1;
+    }
+  }
+  low_patch.assign(patch_px.size(), 0);
+  if (!low_points) return;
+  // The low candidates count where their patch is low throughout (an edge pixel always).
+  low_patch[0] = 0;
+  for (std::size_t id = 1; id < patch_px.size(); ++id) {
+    low_patch[id] = id < cut_pieces.size() && cut_pieces[id] != 0 && patch_px[id] > 0 &&
+                    static_cast<double>(low_px[id]) >=
+                        rule.low_patch_fraction * static_cast<double>(patch_px[id]);
+  }
+  for (int cv_row = 0; cv_row < cells.height; ++cv_row) {
+    auto* height = height_m.ptr<float>(cv_row);
+    auto* count = cell_px.ptr<float>(cv_row);
+    auto* patch = cell_patch.ptr<std::int32_t>(cv_row);
+    for (int cu = 0; cu < cells.width; ++cu) {
+      if (patch[cu] < 0) continue;
+      if (low_patch[static_cast<std::size_t>(patch[cu])] != 0) {
+        count[cu] = 1.0F;
+      } else {
+        height[cu] = 0.0F;
+        patch[cu] = -1;
+      }
     }
   }
 }
@@ -91,17 +139,38 @@ void raised_row(const cv::Mat& height_sums, const cv::Mat& count_sums, const cv:
     raised[u] = cell(u, std::max(0, u - half), std::min(last, u - half + window));
 }
 
+// The low patches that lie mostly (half or more of their pixels) inside a region found join its
+// patch: the stripes of the flat object's top that the table's plane cut off.
+void join_low_patches(cv::Mat& left_labels, FlatObjectBuffers& b) {
+  if (std::none_of(b.inside_px.begin(), b.inside_px.end(), [](std::int64_t n) { return n > 0; }))
+    return;
+  std::vector<std::int64_t>& size_px = b.patch_px;  // recounted at full resolution
+  std::fill(size_px.begin(), size_px.end(), 0);
+  auto* left = left_labels.ptr<std::int32_t>();
+  const std::size_t total = left_labels.total();
+  algo::for_each_label_run(left, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+    const auto slot = static_cast<std::size_t>(id);
+    if (slot < size_px.size()) size_px[slot] += static_cast<std::int64_t>(end - begin);
+  });
+  algo::for_each_label_run(left, total, [&](std::int32_t id, std::size_t begin, std::size_t end) {
+    const auto slot = static_cast<std::size_t>(id);
+    if (slot == 0 || slot >= size_px.size() || 2 * b.inside_px[slot] < size_px[slot]) return;
+    std::fill(left + begin, left + end, b.region_id[slot]);
+  });
+}
+
 }  // namespace
 
 std::int32_t give_flat_objects_back(cv::Mat& plane_labels, std::int32_t table_label,
                                     cv::Mat& left_labels, std::int32_t patch_count,
-                                    const cv::Mat& xyz, const algo::Plane& table,
-                                    const FlatObjectRule& rule, FlatObjectBuffers& buffers,
-                                    std::int64_t& moved_px) {
+                                    const std::vector<char>& cut_pieces, const cv::Mat& xyz,
+                                    const algo::Plane& table, const FlatObjectRule& rule,
+                                    FlatObjectBuffers& buffers, std::int64_t& moved_px) {
   moved_px = 0;
   if (rule.window_px <= 0 || table_label <= 0 || xyz.empty()) return patch_count;
   FlatObjectBuffers& b = buffers;
-  sample_cells(plane_labels, table_label, xyz, table, b.height_m, b.table_px);
+  sample_cells(plane_labels, table_label, left_labels, patch_count, cut_pieces, xyz, table, rule,
+               b.height_m, b.table_px, b.cell_patch, b.patch_px, b.low_px, b.low_patch);
 
   // Mean height of the table cells in each window (windows reach over holes and objects), from
   // summed-area tables of the heights and of the table pixels.
@@ -128,6 +197,8 @@ std::int32_t give_flat_objects_back(cv::Mat& plane_labels, std::int32_t table_la
   const cv::Rect grid(0, 0, b.components.cols, b.components.rows);
   std::vector<float> values;
   std::int32_t count = patch_count;
+  b.inside_px.assign(b.low_patch.size(), 0);
+  b.region_id.assign(b.low_patch.size(), 0);
   for (int r = 1; r < regions; ++r) {
     // Every cell of a region holds a table pixel of the sample: kCellPx^2 pixels each.
     const std::int64_t region_px =
@@ -162,16 +233,31 @@ std::int32_t give_flat_objects_back(cv::Mat& plane_labels, std::int32_t table_la
     const int col_end = std::min(xyz.cols, (box.x + box.width) * kCellPx);
     for (int v = box.y * kCellPx; v < row_end; ++v) {
       const auto* in_region = b.region.ptr<std::uint8_t>(v / kCellPx - box.y);
+      const auto* point = xyz.ptr<float>(v);
       auto* plane = plane_labels.ptr<std::int32_t>(v);
       auto* left = left_labels.ptr<std::int32_t>(v);
       for (int u = box.x * kCellPx; u < col_end; ++u) {
-        if (in_region[u / kCellPx - box.x] == 0 || plane[u] != table_label) continue;
-        plane[u] = 0;
-        left[u] = count;
-        ++moved_px;
+        if (in_region[u / kCellPx - box.x] == 0) continue;
+        if (plane[u] == table_label) {
+          plane[u] = 0;
+          left[u] = count;
+          ++moved_px;
+          continue;
+        }
+        const auto id = static_cast<std::size_t>(left[u]);
+        if (plane[u] != 0 || id >= b.low_patch.size() || (id != 0 && b.low_patch[id] == 0))
+          continue;
+        if (id != 0) {
+          // A low patch joins the region it lies in mostly; counted here, joined below.
+          ++b.inside_px[id];
+          b.region_id[id] = count;
+        } else if (std::abs(table.signed_distance_m(point + 3 * u)) <= rule.max_height_m) {
+          left[u] = count;  // an edge pixel of the object's top (NaN fails the test)
+        }
       }
     }
   }
+  join_low_patches(left_labels, b);
   return count;
 }
 

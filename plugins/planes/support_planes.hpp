@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "facet/algo/label_pieces.hpp"
 #include "facet/algo/neighbour_gate.hpp"
@@ -26,7 +27,8 @@ class SupportPlaneStage final : public Stage {
 
  private:
   std::int32_t split_and_drop_left_patches(cv::Mat& left_labels, std::int32_t patch_count,
-                                           const PlaneAssignment& assignment, const cv::Mat& xyz);
+                                           const PlaneAssignment& assignment, const cv::Mat& xyz,
+                                           std::vector<char>& cut_pieces);
 
   // The four kernels: candidate planes, the table (scene model), the support decision, and the
   // assignment of the points to the accepted planes.
@@ -37,6 +39,7 @@ class SupportPlaneStage final : public Stage {
   AssignmentRule assignment_rule_;
   FlatObjectRule flat_object_rule_;
   FlatObjectBuffers flat_object_buffers_;
+  std::vector<char> cut_pieces_;  // per patch id left: a piece of a patch a plane cut
   double horizontal_max_deg_;
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto

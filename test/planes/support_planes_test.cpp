@@ -485,6 +485,65 @@ TEST(SupportPlanes, AFlatObjectTheTableTookIsGivenBack) {
   EXPECT_NE(majority_label(book.scene.object, 2, blobs.labels), 0);
 }
 
+// A 1 cm book seen far away: its top lies in stripes of disparity steps, every other stripe
+// 7 mm above the table (within delta: the table takes it) and the others 13 mm (beyond delta:
+// pieces the plane cuts off the table's patch). The table's points of the book are stripes
+// too, each narrower than flat_object_min_width_px, so the table's points alone find nothing;
+// averaged with the low stripes (flat_object_max_height_m) the region is the whole book, and
+// the stripes join it.
+TEST(SupportPlanes, AFlatObjectsStripesBeyondDeltaAreAveragedWithTheTablesPoints) {
+  BookOnTable book = book_merged_into_table(0.005);
+  const auto book_px = static_cast<double>(pixels_of(book.scene.object, 2));
+  ASSERT_GT(book_px, 2000.0);
+  constexpr int kStripeRows = 3;
+  for (int v = 0; v < book.points.points.rows; ++v) {
+    const double offset_m = (v / kStripeRows) % 2 == 0 ? -0.003 : 0.003;
+    const Eigen::Vector3d lift = offset_m * kTable.up;
+    for (int u = 0; u < book.points.points.cols; ++u) {
+      if (book.scene.object.at<int>(v, u) != 2) continue;
+      book.points.points.at<cv::Vec3f>(v, u) += cv::Vec3f(
+          static_cast<float>(lift.x()), static_cast<float>(lift.y()), static_cast<float>(lift.z()));
+    }
+  }
+  const auto largest_share = [&](const LabelImage& patches) {
+    const int id = majority_label(book.scene.object, 2, patches.labels);
+    return id == 0 ? 0.0
+                   : static_cast<double>(count_where(book.scene.object, 2, patches.labels, id)) /
+                         book_px;
+  };
+
+  // The table's points alone: the book stays table and stripes (the failure this is for).
+  const PlanesResult table_only =
+      run_planes(book.patches, book.points, {{"flat_object_max_height_m", 0.0}});
+  EXPECT_LT(largest_share(table_only.patches), 0.6);
+
+  const PlanesResult with_low = run_planes(book.patches, book.points);
+  EXPECT_GT(largest_share(with_low.patches), 0.8);
+  const int book_patch = majority_label(book.scene.object, 2, with_low.patches.labels);
+  EXPECT_LT(
+      static_cast<double>(count_where(book.scene.object, 1, with_low.patches.labels, book_patch)),
+      0.1 * book_px);
+  const LabelImage blobs = run_blobs(with_low.patches, book.points, &with_low.planes);
+  EXPECT_NE(majority_label(book.scene.object, 2, blobs.labels), 0);
+}
+
+// A flat object whose top grew a patch of its own (16 mm thick: beyond delta) is an object
+// already. Its points lie within flat_object_max_height_m of the table, but only the pieces a
+// plane cut count as low points, so no region forms around it and takes a ring of the table.
+TEST(SupportPlanes, AFlatObjectWithAPatchOfItsOwnTakesNoTable) {
+  SceneBuilder builder;
+  builder.plane(kTable.table_point, kTable.up);
+  kTable.box_on_table(builder, 0.0, 0.05, {0.08, 0.06, 0.008});
+  const RenderedScene scene = builder.render();
+  const PointImage points = scene_points(scene);
+  const LabelImage patches = face_patches(scene, points);
+  const PlanesResult run = run_planes(patches, points);
+  const PlanesResult table_only = run_planes(patches, points, {{"flat_object_max_height_m", 0.0}});
+  EXPECT_EQ(cv::countNonZero(run.plane_labels.labels != table_only.plane_labels.labels), 0);
+  EXPECT_EQ(cv::countNonZero(run.patches.labels != table_only.patches.labels), 0);
+  EXPECT_GT(pixels_of(scene.object, 2), 2000);
+}
+
 // How many pixels rule 7 takes from the planes: plane labels with it against without it.
 std::int64_t flat_object_px(const LabelImage& patches, const PointImage& points,
                             const Overrides& params = {}) {
