@@ -18,7 +18,7 @@ class GrowSurfaces final : public Stage {
 
  private:
   int connectivity_;
-  RegionSizeRule region_size_;
+  algo::RegionSizeRule region_size_;
   double max_unassigned_ratio_;
   // Both keep their buffers from frame to frame.
   SurfaceRegionLabeler regions_;

@@ -7,17 +7,8 @@
 
 namespace facet::grow {
 
-bool RegionSizeRule::keeps(std::int64_t size_px, double depth_m) const {
-  if (size_px >= min_px) return true;
-  if (!depends_on_depth() || size_px < far_min_px || !(depth_m > reference_depth_m)) return false;
-  // size >= min_px * (reference / z)^2, without the division.
-  const double size = static_cast<double>(size_px);
-  return size * depth_m * depth_m >=
-         static_cast<double>(min_px) * reference_depth_m * reference_depth_m;
-}
-
 SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, const cv::Mat& points,
-                                           int connectivity, const RegionSizeRule& size) {
+                                           int connectivity, const algo::RegionSizeRule& size) {
   if (classes.type() != CV_8UC1) throw std::invalid_argument("pixel classes must be CV_8UC1");
   if (connectivity != 4 && connectivity != 8) {
     throw std::invalid_argument("connectivity must be 4 or 8");
@@ -32,9 +23,8 @@ SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, const cv::Mat
   buffer.rowRange(0, guard_rows).setTo(0);
   buffer.rowRange(guard_rows + classes.rows, buffer.rows).setTo(0);
   result.labels = buffer.rowRange(guard_rows, guard_rows + classes.rows);
-  const std::int64_t smallest_px = size.depends_on_depth() ? size.far_min_px : size.min_px;
   const algo::Components regions =
-      components_.label(classes, kSurfacePixel, connectivity, smallest_px, result.labels);
+      components_.label(classes, kSurfacePixel, connectivity, size.smallest_px(), result.labels);
   result.count = regions.count;
   result.labelled_px = regions.labelled_px;
   if (size.depends_on_depth()) drop_small_near_regions(points, size, result);
@@ -42,7 +32,7 @@ SurfaceRegions SurfaceRegionLabeler::label(const cv::Mat& classes, const cv::Mat
 }
 
 void SurfaceRegionLabeler::drop_small_near_regions(const cv::Mat& points,
-                                                   const RegionSizeRule& size,
+                                                   const algo::RegionSizeRule& size,
                                                    SurfaceRegions& regions) {
   if (points.type() != CV_32FC3 || points.size() != regions.labels.size()) {
     throw std::invalid_argument("points must be CV_32FC3 of the classes' size");

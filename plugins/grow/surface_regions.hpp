@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "facet/algo/connected_components.hpp"
+#include "facet/algo/region_size_rule.hpp"
 
 namespace facet::grow {
 
@@ -22,21 +23,6 @@ struct SurfaceRegions {
   std::int64_t labelled_px = 0;  // pixels carrying a label
 };
 
-// The smallest region kept. Up to reference_depth_m it is min_px; beyond, a region at mean depth
-// z needs the area min_px covers at the reference depth, min_px * (reference_depth_m / z)^2
-// pixels, but never fewer than far_min_px. A surface seen from twice as far covers a quarter of
-// the pixels, and its edge bands (a fixed number of pixels) eat a larger share of it, so a fixed
-// pixel count drops far objects' faces that near ones of the same size keep.
-struct RegionSizeRule {
-  std::int64_t min_px = 100;
-  double reference_depth_m = 0.0;  // 0: min_px at every depth
-  std::int64_t far_min_px = 100;
-
-  bool depends_on_depth() const { return reference_depth_m > 0.0 && far_min_px < min_px; }
-  // Whether a region of size_px pixels at mean depth depth_m is kept.
-  bool keeps(std::int64_t size_px, double depth_m) const;
-};
-
 // Keeps its working memory between frames, so one instance serves one thread.
 class SurfaceRegionLabeler {
  public:
@@ -46,12 +32,12 @@ class SurfaceRegionLabeler {
   // order (row, then column) of each region's first pixel, so the result does not depend on
   // anything but the input.
   SurfaceRegions label(const cv::Mat& classes, const cv::Mat& points, int connectivity,
-                       const RegionSizeRule& size);
+                       const algo::RegionSizeRule& size);
 
  private:
   // Sets the regions under size.min_px that their depth does not excuse to 0 and renumbers the
   // rest, keeping their order.
-  void drop_small_near_regions(const cv::Mat& points, const RegionSizeRule& size,
+  void drop_small_near_regions(const cv::Mat& points, const algo::RegionSizeRule& size,
                                SurfaceRegions& regions);
 
   algo::ComponentLabeler components_;

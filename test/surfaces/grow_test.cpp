@@ -5,7 +5,6 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -139,23 +138,6 @@ TEST(GrowSurfaces, SmallRegionsReturnToThePoolAndJoinTheirNeighbour) {
   const GrowResult kept = run_grow(input.edges, input.points, {{"min_size_px", std::int64_t{16}}});
   EXPECT_EQ(kept.patches.count, 2);
   EXPECT_EQ(kept.patches.labels.at<std::int32_t>(22, 22), 2);
-}
-
-// The rule's boundary: min_px up to the reference depth, the same area beyond it, never fewer
-// than far_min_px.
-TEST(RegionSizeRule, FarRegionsNeedTheAreaTheMinimumCoversAtTheReferenceDepth) {
-  const grow::RegionSizeRule rule{100, 1.0, 50};
-  EXPECT_TRUE(rule.keeps(100, 0.5));
-  EXPECT_FALSE(rule.keeps(99, 0.5));
-  EXPECT_FALSE(rule.keeps(99, 1.0));
-  EXPECT_TRUE(rule.keeps(64, 1.25));  // 100 * (1 / 1.25)^2 = 64
-  EXPECT_FALSE(rule.keeps(63, 1.25));
-  EXPECT_TRUE(rule.keeps(50, 2.0));  // the area asks 25, the floor 50
-  EXPECT_FALSE(rule.keeps(49, 2.0));
-  EXPECT_FALSE(rule.keeps(99, std::numeric_limits<double>::quiet_NaN()));
-  const grow::RegionSizeRule fixed{100, 0.0, 50};
-  EXPECT_FALSE(fixed.keeps(99, 3.0));
-  EXPECT_TRUE(fixed.keeps(100, 3.0));
 }
 
 // An 8 x 8 region enclosed by edges: dropped at 1 and 1.2 m (needs 100 and 69 px), kept at 1.5
