@@ -29,7 +29,8 @@ cv::Mat flat_points(int rows, int cols, float z_m) {
 }
 
 EuclideanRegions blobs_of(const cv::Mat& patch_mask, const cv::Mat& xyz) {
-  return grow_euclidean_regions(patch_mask, xyz, facet::algo::NeighbourGate(kDistanceM, 0.0F), 1);
+  return grow_euclidean_regions(patch_mask, xyz, facet::algo::NeighbourGate(kDistanceM, 0.0F),
+                                facet::algo::RegionSizeRule{1, 0.0, 1});
 }
 
 // attach_edge_pixels with the edge pixels listed in raster order, as grow.blobs lists them.
@@ -39,8 +40,9 @@ facet::blobs::EdgeAttachment attach(EuclideanRegions& blobs, const cv::Mat& edge
   for (int i = 0; i < static_cast<int>(edges.total()); ++i) {
     if (edges.ptr<std::uint8_t>()[i] != 0) pixels.push_back(i);
   }
+  const facet::algo::RegionSizeRule size{min_size_px, 0.0, min_size_px};
   return attach_edge_pixels(blobs, edges, pixels, xyz, facet::algo::NeighbourGate(kDistanceM, 0.0F),
-                            min_size_px);
+                            min_size_px < 0 ? nullptr : &size);
 }
 
 TEST(EdgeAttachment, AnEdgeBandBetweenTwoBlobsIsSharedAndKeepsThemApart) {
@@ -83,7 +85,7 @@ TEST(EdgeAttachment, EdgeOnlyObjectsBecomeBlobsWhenLargeEnough) {
   EXPECT_EQ(blobs.labels.at<std::int32_t>(15, 33), 0);  // 4 px: under min_size_px
 }
 
-TEST(EdgeAttachment, NegativeMinimumSizeMakesNoEdgeOnlyBlobs) {
+TEST(EdgeAttachment, WithoutASizeRuleNoEdgeOnlyBlobsAreMade) {
   // grow.blobs asks for none when no support plane was found.
   const cv::Mat xyz = flat_points(20, 40, 1.0F);
   cv::Mat patches(20, 40, CV_8UC1, cv::Scalar(0));
@@ -130,6 +132,39 @@ TEST(EdgeAttachment, ADepthJumpStopsTheAttachment) {
   EXPECT_EQ(result.attached_px, 0);
   EXPECT_EQ(blobs.count, 1);
   EXPECT_EQ(cv::countNonZero(blobs.labels), 100);
+}
+
+// grow.blobs' min_size_reference_depth_m: a 12 x 12 region (144 px) under min_px 200 is kept
+// where the area 200 px cover at 1 m needs no more (from 1.18 m on, 200 / 1.18^2 = 143.6), never
+// under the floor of 100 px, and nowhere without the rule; patch blobs and edge-only blobs alike.
+TEST(BlobSize, FarBlobsNeedOnlyTheAreaNearOnesNeed) {
+  const facet::algo::RegionSizeRule by_area{200, 1.0, 100};
+  const facet::algo::RegionSizeRule fixed{200, 0.0, 100};
+  const facet::algo::RegionSizeRule high_floor{200, 1.0, 150};
+  cv::Mat square(30, 30, CV_8UC1, cv::Scalar(0));
+  square(cv::Rect(8, 8, 12, 12)).setTo(1);
+  const cv::Mat none(30, 30, CV_8UC1, cv::Scalar(0));
+  const facet::algo::NeighbourGate gate(kDistanceM, 0.0F);
+  // As a blob of patch pixels (edge_only false) or of edge pixels alone.
+  const auto kept = [&](float depth_m, const facet::algo::RegionSizeRule& size, bool edge_only) {
+    const cv::Mat xyz = flat_points(30, 30, depth_m);
+    EuclideanRegions blobs = grow_euclidean_regions(edge_only ? none : square, xyz, gate, size);
+    if (!edge_only) return blobs.count == 1;
+    std::vector<std::int32_t> pixels;
+    for (int i = 0; i < static_cast<int>(square.total()); ++i) {
+      if (square.ptr<std::uint8_t>()[i] != 0) pixels.push_back(i);
+    }
+    return attach_edge_pixels(blobs, square, pixels, xyz, gate, &size).edge_only_blobs == 1;
+  };
+  for (const bool edge_only : {false, true}) {
+    SCOPED_TRACE(edge_only ? "edge-only blob" : "patch blob");
+    EXPECT_FALSE(kept(1.0F, by_area, edge_only));
+    EXPECT_FALSE(kept(1.15F, by_area, edge_only));  // needs 151 px
+    EXPECT_TRUE(kept(1.2F, by_area, edge_only));    // needs 139 px
+    EXPECT_TRUE(kept(3.0F, by_area, edge_only));    // needs 22 px: the floor's 100
+    EXPECT_FALSE(kept(3.0F, fixed, edge_only));
+    EXPECT_FALSE(kept(3.0F, high_floor, edge_only));
+  }
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ namespace facet::test {
 namespace {
 
 using algo::NeighbourGate;
+using algo::RegionSizeRule;
 
 TEST(NeighbourGate, GrowsWithTheSquareOfTheDepthBeyondItsStart) {
   const NeighbourGate gate(0.01F, 1.2F);
@@ -47,9 +48,11 @@ TEST(NeighbourGate, FarPlaneInDepthStepsIsOneRegion) {
     }
   }
   const cv::Mat mask(rows, cols, CV_8UC1, cv::Scalar(1));
-  const auto growing = blobs::grow_euclidean_regions(mask, xyz, NeighbourGate(0.01F, 1.2F), 1);
+  const auto growing = blobs::grow_euclidean_regions(mask, xyz, NeighbourGate(0.01F, 1.2F),
+                                                     RegionSizeRule{1, 0.0, 1});
   EXPECT_EQ(growing.count, 1);
-  const auto fixed = blobs::grow_euclidean_regions(mask, xyz, NeighbourGate(0.01F, 0.0F), 1);
+  const auto fixed = blobs::grow_euclidean_regions(mask, xyz, NeighbourGate(0.01F, 0.0F),
+                                                   RegionSizeRule{1, 0.0, 1});
   EXPECT_GT(fixed.count, 10);
 }
 

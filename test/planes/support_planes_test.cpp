@@ -604,5 +604,29 @@ TEST(SupportPlanes, ASlowRiseOrANarrowStripOfTheTableStaysTable) {
   EXPECT_LT(wide_px, 59 * 39 * 12 / 10);
 }
 
+// grow.blobs' min_size_reference_depth_m through the stage: a 12 x 12 patch (144 px) under
+// min_size_px 200 on a plane 2 m away is kept with the tabletop graph's rule (1 m, floor 100 px)
+// and removed without it, or when it lies 1 m away.
+TEST(GrowBlobs, AFarSmallObjectIsKeptByTheAreaItCovers) {
+  const auto blob_count = [](float depth_m, const Overrides& params) {
+    PointImage points;
+    points.points = cv::Mat(30, 30, CV_32FC3);
+    for (int y = 0; y < 30; ++y)
+      for (int x = 0; x < 30; ++x)
+        points.points.at<cv::Vec3f>(y, x) =
+            cv::Vec3f(0.002F * static_cast<float>(x), 0.002F * static_cast<float>(y), depth_m);
+    LabelImage patches;
+    patches.labels = cv::Mat(30, 30, CV_32SC1, cv::Scalar(0));
+    patches.labels(cv::Rect(8, 8, 12, 12)).setTo(1);
+    patches.count = 1;
+    return run_blobs(patches, points, nullptr, params).count;
+  };
+  const Overrides by_area{{"min_size_reference_depth_m", 1.0},
+                          {"min_size_far_px", std::int64_t{100}}};
+  EXPECT_EQ(blob_count(2.0F, by_area), 1);
+  EXPECT_EQ(blob_count(1.0F, by_area), 0);
+  EXPECT_EQ(blob_count(2.0F, {}), 0);
+}
+
 }  // namespace
 }  // namespace facet::test

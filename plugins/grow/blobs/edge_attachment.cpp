@@ -93,11 +93,25 @@ void restore_raster_order(EuclideanRegions& blobs) {
   blobs.first_px = std::move(first);
 }
 
+// Whether the rule keeps the region (raster indices), by its size and, when that is below the
+// rule's minimum, its mean depth.
+bool keeps(const algo::RegionSizeRule& size, const std::vector<std::int32_t>& region,
+           const cv::Mat& xyz) {
+  const auto n = static_cast<std::int64_t>(region.size());
+  if (n >= size.min_px || !size.depends_on_depth()) return n >= size.min_px;
+  const auto* point = xyz.ptr<float>();
+  double depth_sum_m = 0.0;
+  for (const std::int32_t i : region)
+    depth_sum_m += point[3 * static_cast<std::ptrdiff_t>(i) + 2];
+  return size.keeps(n, depth_sum_m / static_cast<double>(n));
+}
+
 }  // namespace
 
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
-                                  const algo::NeighbourGate& gate, std::int64_t min_size_px) {
+                                  const algo::NeighbourGate& gate,
+                                  const algo::RegionSizeRule* own_blob_size) {
   EdgeGrid grid(blobs.labels, edges, xyz, gate);
   std::int32_t* label = grid.label();
   EdgeAttachment result;
@@ -134,12 +148,12 @@ EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
   std::vector<std::int32_t> region;
   std::vector<std::int32_t> too_small;
   for (const std::int32_t seed : edge_pixels) {
-    if (min_size_px < 0) break;
+    if (own_blob_size == nullptr) break;
     if (label[seed] != 0) continue;
     region.assign(1, seed);
     label[seed] = blobs.count + 1;
     grid.spread(region);
-    if (static_cast<std::int64_t>(region.size()) >= min_size_px) {
+    if (keeps(*own_blob_size, region, xyz)) {
       ++blobs.count;
       ++result.edge_only_blobs;
       blobs.first_px.push_back(seed);

@@ -11,6 +11,7 @@
 #include <span>
 
 #include "blobs/euclidean_regions.hpp"
+#include "facet/algo/region_size_rule.hpp"
 
 namespace facet::blobs {
 
@@ -23,11 +24,12 @@ struct EdgeAttachment {
 // place; ids stay in raster order of each blob's first pixel). edges: CV_8UC1, non-zero = an edge
 // pixel that may join (finite point, in no patch, on no plane); edge_pixels: the raster indices
 // of those pixels, in raster order, so that the work follows the edge pixels, not the image.
-// xyz: CV_32FC3, continuous. Neighbours link when the gate finds them close. New blobs under
-// min_size_px are left out; min_size_px < 0 makes none (the edge pixels only join the blobs
-// there are).
+// xyz: CV_32FC3, continuous. Neighbours link when the gate finds them close. New blobs that
+// `own_blob_size` does not keep (by their pixel count and mean depth) are left out; nullptr
+// makes none (the edge pixels only join the blobs there are).
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
-                                  const algo::NeighbourGate& gate, std::int64_t min_size_px);
+                                  const algo::NeighbourGate& gate,
+                                  const algo::RegionSizeRule* own_blob_size);
 
 }  // namespace facet::blobs

@@ -9,7 +9,8 @@
 namespace facet::blobs {
 
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
-                                        const algo::NeighbourGate& gate, std::int64_t min_size_px) {
+                                        const algo::NeighbourGate& gate,
+                                        const algo::RegionSizeRule& size) {
   const int rows = mask.rows;
   const int cols = mask.cols;
   const std::size_t total = mask.total();
@@ -49,15 +50,27 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
 
   // A parent always has a smaller index than its child, so one forward pass points every pixel
   // at its root (the parent is already flat when the child is visited) and sizes the sets; a
-  // root is visited before the rest of its set, which is when its count starts.
+  // root is visited before the rest of its set, which is when its count starts. With a size
+  // rule that depends on depth, the pass sums the sets' depths too.
   const auto* in = mask.ptr<unsigned char>();
   std::vector<std::int32_t> size_px(total);  // valid at roots only
+  const bool by_depth = size.depends_on_depth();
+  std::vector<float> depth_sum_m(by_depth ? total : 0);  // valid at roots only
   for (std::size_t i = 0; i < total; ++i) {
     if (in[i] == 0) continue;
     const auto root = static_cast<std::size_t>(sets.flatten(static_cast<std::int32_t>(i)));
-    if (root == i) size_px[i] = 0;
+    if (root == i) {
+      size_px[i] = 0;
+      if (by_depth) depth_sum_m[i] = 0.0F;
+    }
     ++size_px[root];
+    if (by_depth) depth_sum_m[root] += point[3 * i + 2];
   }
+  const auto kept = [&](std::size_t root) {
+    const std::int64_t n = size_px[root];
+    if (n >= size.min_px || !by_depth) return n >= size.min_px;
+    return size.keeps(n, static_cast<double>(depth_sum_m[root]) / static_cast<double>(n));
+  };
   // Ids for the roots of large enough sets, in raster order; every pixel is written once.
   EuclideanRegions out;
   out.labels.create(rows, cols, CV_32SC1);
@@ -71,7 +84,7 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
     }
     const auto root = static_cast<std::size_t>(sets.parent(static_cast<std::int32_t>(i)));
     if (root == i) {
-      id_of_root[i] = size_px[i] >= min_size_px ? ++out.count : 0;
+      id_of_root[i] = kept(i) ? ++out.count : 0;
       if (id_of_root[i] != 0) out.first_px.push_back(static_cast<std::int64_t>(i));
     }
     label[i] = id_of_root[root];

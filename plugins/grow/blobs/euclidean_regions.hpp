@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "facet/algo/neighbour_gate.hpp"
+#include "facet/algo/region_size_rule.hpp"
 
 namespace facet::blobs {
 
@@ -19,9 +20,10 @@ struct EuclideanRegions {
 };
 
 // mask: CV_8UC1, non-zero = pixel takes part (it must have a finite point). xyz: CV_32FC3,
-// continuous, same size. Neighbours join when the gate finds them close. Regions under
-// min_size_px are left at 0.
+// continuous, same size. Neighbours join when the gate finds them close. Regions `size` does
+// not keep (by their pixel count and mean depth) are left at 0.
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
-                                        const algo::NeighbourGate& gate, std::int64_t min_size_px);
+                                        const algo::NeighbourGate& gate,
+                                        const algo::RegionSizeRule& size);
 
 }  // namespace facet::blobs

@@ -8,6 +8,7 @@
 
 #include "blobs/blob_support.hpp"
 #include "facet/algo/neighbour_gate.hpp"
+#include "facet/algo/region_size_rule.hpp"
 #include "facet/stage.hpp"
 
 namespace facet::blobs {
@@ -20,7 +21,7 @@ class GrowBlobs final : public Stage {
 
  private:
   algo::NeighbourGate gate_;
-  std::int64_t min_size_px_;
+  algo::RegionSizeRule size_;
   bool edge_pixels_;
   BackgroundBlobRule rule_;
   std::optional<Eigen::AlignedBox3f> workspace_;
