@@ -93,17 +93,12 @@ void restore_raster_order(EuclideanRegions& blobs) {
   blobs.first_px = std::move(first);
 }
 
-// Whether the rule keeps the region (raster indices), by its size and, when that is below the
-// rule's minimum, its mean depth.
+// Whether the rule keeps the region (raster indices, its seed first) by its size and the depth
+// of its seed, as grow_euclidean_regions judges a region by its first pixel.
 bool keeps(const algo::RegionSizeRule& size, const std::vector<std::int32_t>& region,
            const cv::Mat& xyz) {
-  const auto n = static_cast<std::int64_t>(region.size());
-  if (n >= size.min_px || !size.depends_on_depth()) return n >= size.min_px;
-  const auto* point = xyz.ptr<float>();
-  double depth_sum_m = 0.0;
-  for (const std::int32_t i : region)
-    depth_sum_m += point[3 * static_cast<std::ptrdiff_t>(i) + 2];
-  return size.keeps(n, depth_sum_m / static_cast<double>(n));
+  const float* seed = xyz.ptr<float>() + 3 * static_cast<std::ptrdiff_t>(region.front());
+  return size.keeps(static_cast<std::int64_t>(region.size()), static_cast<double>(seed[2]));
 }
 
 }  // namespace

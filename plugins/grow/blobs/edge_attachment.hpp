@@ -25,7 +25,8 @@ struct EdgeAttachment {
 // pixel that may join (finite point, in no patch, on no plane); edge_pixels: the raster indices
 // of those pixels, in raster order, so that the work follows the edge pixels, not the image.
 // xyz: CV_32FC3, continuous. Neighbours link when the gate finds them close. New blobs that
-// `own_blob_size` does not keep (by their pixel count and mean depth) are left out; nullptr
+// `own_blob_size` does not keep (by their pixel count and the depth of their first pixel) are
+// left out; nullptr
 // makes none (the edge pixels only join the blobs there are).
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,

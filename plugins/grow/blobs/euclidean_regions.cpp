@@ -50,26 +50,19 @@ EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
 
   // A parent always has a smaller index than its child, so one forward pass points every pixel
   // at its root (the parent is already flat when the child is visited) and sizes the sets; a
-  // root is visited before the rest of its set, which is when its count starts. With a size
-  // rule that depends on depth, the pass sums the sets' depths too.
+  // root is visited before the rest of its set, which is when its count starts.
   const auto* in = mask.ptr<unsigned char>();
   std::vector<std::int32_t> size_px(total);  // valid at roots only
-  const bool by_depth = size.depends_on_depth();
-  std::vector<float> depth_sum_m(by_depth ? total : 0);  // valid at roots only
   for (std::size_t i = 0; i < total; ++i) {
     if (in[i] == 0) continue;
     const auto root = static_cast<std::size_t>(sets.flatten(static_cast<std::int32_t>(i)));
-    if (root == i) {
-      size_px[i] = 0;
-      if (by_depth) depth_sum_m[i] = 0.0F;
-    }
+    if (root == i) size_px[i] = 0;
     ++size_px[root];
-    if (by_depth) depth_sum_m[root] += point[3 * i + 2];
   }
+  // A set under min_px is judged at the depth of its first pixel (the root): it spans a few
+  // centimetres at most, and a mean would cost a sum over every pixel of every set.
   const auto kept = [&](std::size_t root) {
-    const std::int64_t n = size_px[root];
-    if (n >= size.min_px || !by_depth) return n >= size.min_px;
-    return size.keeps(n, static_cast<double>(depth_sum_m[root]) / static_cast<double>(n));
+    return size.keeps(size_px[root], static_cast<double>(point[3 * root + 2]));
   };
   // Ids for the roots of large enough sets, in raster order; every pixel is written once.
   EuclideanRegions out;

@@ -21,7 +21,7 @@ struct EuclideanRegions {
 
 // mask: CV_8UC1, non-zero = pixel takes part (it must have a finite point). xyz: CV_32FC3,
 // continuous, same size. Neighbours join when the gate finds them close. Regions `size` does
-// not keep (by their pixel count and mean depth) are left at 0.
+// not keep (by their pixel count and the depth of their first pixel) are left at 0.
 EuclideanRegions grow_euclidean_regions(const cv::Mat& mask, const cv::Mat& xyz,
                                         const algo::NeighbourGate& gate,
                                         const algo::RegionSizeRule& size);

@@ -55,10 +55,11 @@ const Param<std::int64_t> kMinSize{
 const Param<double> kMinSizeReferenceDepth{
     "min_size_reference_depth_m",
     0.0,
-    "Beyond this depth a blob needs only the area min_size_px covers here: a blob at mean depth "
-    "z is kept with min_size_px * (reference / z)^2 pixels, and never fewer than "
-    "min_size_far_px (the same rule as grow.surfaces'). An object seen from twice as far covers "
-    "a quarter of the pixels, so a fixed count drops the small objects of a far table that near "
+    "Beyond this depth a blob needs only the area min_size_px covers here: a blob whose first "
+    "pixel lies at depth z is kept with min_size_px * (reference / z)^2 pixels, and never fewer "
+    "than min_size_far_px (grow.surfaces' rule, judged at the first pixel: a blob under "
+    "min_size_px spans a few centimetres of depth). An object seen from twice as far covers a "
+    "quarter of the pixels, so a fixed count drops the small objects of a far table that near "
     "ones of the same size keep. 0 = min_size_px at every depth (the paper).",
     {.unit = "m",
      .min = 0.0,
