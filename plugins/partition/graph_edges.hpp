@@ -52,6 +52,9 @@ struct CoplanarRule {
   // plane (and normals within max_angle_deg) are one surface that an edge line broke (noise, a
   // label or a seam); 0 = never joined this way.
   double touching_max_distance_m = 0.0;
+  // A body of the two patches' own blob in the gap occludes too when it stands on their plane
+  // (the plane seen beyond it across the line): a can standing on a board seen in two pieces.
+  bool body_on_surface = true;
 };
 
 // Per node, the nodes whose patches touch its patch in the image (grow.surfaces' adjacency),

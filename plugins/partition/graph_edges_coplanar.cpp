@@ -16,6 +16,58 @@ double distance_to(const FittedPlane& plane, const Eigen::Vector3f& point) {
   return static_cast<double>(plane.signed_distance_m(point.data()));
 }
 
+// Pixels of a node more than margin_m behind the surface.
+std::int32_t pixels_behind(const GraphNode& node, const FrameImages& images,
+                           const FittedPlane& surface, double margin_m) {
+  const cv::Mat& patches = *images.patches;
+  std::int32_t behind = 0;
+  for (int v = node.box_px[1]; v <= node.box_px[3]; ++v) {
+    const auto* patch = patches.ptr<std::int32_t>(v);
+    const auto* blob = images.blobs->ptr<std::int32_t>(v);
+    const auto* point = images.points->ptr<cv::Vec3f>(v);
+    for (int u = node.box_px[0]; u <= node.box_px[2]; ++u) {
+      if (patch[u] != node.patch || blob[u] != node.blob) continue;
+      const cv::Vec3f& p = point[u];
+      if (surface.signed_distance_m(p[0], p[1], p[2]) < -margin_m) ++behind;  // false for NaN
+    }
+  }
+  return behind;
+}
+
+// Whether the body in the gap between nodes i and j stands on their surface: its patches (in the
+// two pieces' blobs) and the patches touching them, but for the two pieces, each have at most a
+// fifth of their pixels behind the surface. A can on a board ends at the board; a taller box
+// between two equal boxes has a front face that reaches down to the table. A body without a
+// patch gives no evidence.
+bool body_stands_on(const FittedPlane& surface, const std::vector<std::int32_t>& body_patches,
+                    std::int32_t i, std::int32_t j, const GraphNodes& graph,
+                    const TouchingNodes& touching, const FrameImages& images, double margin_m) {
+  const GraphNode& a = graph.nodes[static_cast<std::size_t>(i)];
+  const GraphNode& b = graph.nodes[static_cast<std::size_t>(j)];
+  std::vector<std::int32_t> body;
+  for (std::size_t n = 0; n < graph.nodes.size(); ++n) {
+    const GraphNode& node = graph.nodes[n];
+    if ((node.blob == a.blob || node.blob == b.blob) &&
+        std::binary_search(body_patches.begin(), body_patches.end(), node.patch)) {
+      body.push_back(static_cast<std::int32_t>(n));
+    }
+  }
+  if (body.empty()) return false;
+  const std::size_t direct = body.size();
+  for (std::size_t k = 0; k < direct; ++k) {
+    const auto& near = touching[static_cast<std::size_t>(body[k])];
+    body.insert(body.end(), near.begin(), near.end());
+  }
+  std::sort(body.begin(), body.end());
+  body.erase(std::unique(body.begin(), body.end()), body.end());
+  for (const std::int32_t n : body) {
+    if (n == i || n == j) continue;
+    const GraphNode& node = graph.nodes[static_cast<std::size_t>(n)];
+    if (5 * pixels_behind(node, images, surface, margin_m) > node.size_px) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
@@ -61,9 +113,15 @@ void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
                      rule.max_partners)) {
     const GraphNode& a = graph.nodes[static_cast<std::size_t>(pair.a)];
     const GraphNode& b = graph.nodes[static_cast<std::size_t>(pair.b)];
-    const GapEvidence gap = look_between(a, b, images, plane_between(a.plane, b.plane),
-                                         rule.front_margin_m, rule.lines);
-    if (!is_occluded(gap, rule.min_gap_px, rule.min_front_share)) continue;
+    const FittedPlane surface = plane_between(a.plane, b.plane);
+    const GapEvidence gap =
+        look_between(a, b, images, surface, rule.front_margin_m, rule.lines, rule.body_on_surface);
+    const bool occluded = is_occluded(gap, rule.min_gap_px, rule.min_front_share) ||
+                          (rule.body_on_surface &&
+                           is_occluded_by_own_body(gap, rule.min_gap_px, rule.min_front_share) &&
+                           body_stands_on(surface, gap.body_patches, pair.a, pair.b, graph,
+                                          touching, images, rule.front_margin_m));
+    if (!occluded) continue;
     edges.push_back({pair.a, pair.b, EdgeFeature::coplanar});
   }
 }

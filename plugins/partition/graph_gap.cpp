@@ -32,13 +32,21 @@ FittedPlane plane_between(const FittedPlane& a, const FittedPlane& b) {
 }
 
 bool is_occluded(const GapEvidence& gap, std::int32_t min_gap_px, double min_front_share) {
-  const std::int32_t valid = gap.front_px + gap.other_px;
+  const std::int32_t valid = gap.front_px + gap.own_front_px + gap.other_px;
   return gap.lines_through > 0 && valid >= min_gap_px && valid > 0 &&
          static_cast<double>(gap.front_px) >= min_front_share * valid;
 }
 
+bool is_occluded_by_own_body(const GapEvidence& gap, std::int32_t min_gap_px,
+                             double min_front_share) {
+  const std::int32_t valid = gap.front_px + gap.own_front_px + gap.other_px;
+  return gap.lines_through > 0 && valid >= min_gap_px && valid > 0 &&
+         static_cast<double>(gap.front_px + gap.own_front_px) >= min_front_share * valid;
+}
+
 GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImages& images,
-                         const FittedPlane& surface, double front_margin_m, std::int32_t lines) {
+                         const FittedPlane& surface, double front_margin_m, std::int32_t lines,
+                         bool list_body_patches) {
   GapEvidence evidence;
   const cv::Mat& patches = *images.patches;
   const cv::Mat& points = *images.points;
@@ -91,13 +99,23 @@ GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImag
       }
       const double distance = surface.signed_distance_m(p[0], p[1], p[2]);
       const std::int32_t blob = blob_at[v * width + u];
-      if (distance > front_margin_m && blob != a.blob && blob != b.blob) {
+      if (distance <= front_margin_m) {
+        ++evidence.other_px;
+      } else if (blob != a.blob && blob != b.blob) {
         ++evidence.front_px;
       } else {
-        ++evidence.other_px;
+        ++evidence.own_front_px;
+        const std::int32_t label = patch_at[v * width + u];
+        if (list_body_patches && label > 0 && label != a.patch && label != b.patch) {
+          evidence.body_patches.push_back(label);
+        }
       }
     }
   }
+  std::sort(evidence.body_patches.begin(), evidence.body_patches.end());
+  evidence.body_patches.erase(
+      std::unique(evidence.body_patches.begin(), evidence.body_patches.end()),
+      evidence.body_patches.end());
   return evidence;
 }
 
