@@ -41,11 +41,12 @@ float median_height(const cv::Mat& mask, const cv::Mat& height_m, const cv::Mat&
 // Per cell: the height above the table of its first pixel (top left) when that is a table pixel
 // (cell_px 1), else 0 (cell_px 0). One pixel in four is enough for a mean over a window, and the
 // pass over the points is the rule's largest cost. With rule.max_height_m, a pixel on no plane
-// whose point lies within that height of the table counts too when it is in no patch (an edge
-// pixel) or in a low piece: a piece of a patch a plane cut (`cut_pieces`) with
-// low_patch_fraction of its sampled points that low (a stripe the table's plane cut off the
-// table's patch). An object's own patch never counts: its region would take a ring of table.
-// `cell_patch` keeps those pixels' patch ids, for the give-back.
+// whose point lies within that height of the table counts too when it is in a low piece: a piece
+// of a patch a plane cut (`cut_pieces`) with low_patch_fraction of its sampled points that low (a
+// stripe the table's plane cut off the table's patch). An object's own patch never counts (its
+// region would take a ring of table), nor an edge pixel (one beside a bowl made a low region of
+// its own on a real frame). `cell_patch` keeps the low pieces' ids, for the give-back. (Testing
+// for a cut piece before the height, to skip the objects' pixels, took more instructions.)
 void sample_cells(const cv::Mat& plane_labels, std::int32_t table_label, const cv::Mat& left_labels,
                   std::int32_t patch_count, const std::vector<char>& cut_pieces, const cv::Mat& xyz,
                   const algo::Plane& table, const FlatObjectRule& rule, cv::Mat& height_m,
@@ -83,7 +84,7 @@ void sample_cells(const cv::Mat& plane_labels, std::int32_t table_label, const c
   }
   low_patch.assign(patch_px.size(), 0);
   if (!low_points) return;
-  // The low candidates count where their patch is low throughout (an edge pixel always).
+  // The low candidates count where their piece is low throughout; edge pixels (id 0) never.
   low_patch[0] = 0;
   for (std::size_t id = 1; id < patch_px.size(); ++id) {
     low_patch[id] = id < cut_pieces.size() && cut_pieces[id] != 0 && patch_px[id] > 0 &&

@@ -8,10 +8,10 @@
 //
 // The table takes only the object's points within delta of its plane; the rest, its noisier
 // upper half, is left as stripes (pieces the plane cut off the table's patch) and edge pixels.
-// Those low points (within max_height_m of the table, in no patch or in a piece of a cut patch
-// that lies all that low) are averaged with the table's, so the region stays whole and its mean
-// height is the object's, not that of its lower half; the stripes inside a region found join its
-// patch.
+// Those low points (within max_height_m of the table, in a piece of a cut patch that lies all
+// that low) are averaged with the table's, so the region stays whole and its mean height is the
+// object's, not that of its lower half; the stripes inside a region found join its patch, and so
+// do its edge pixels within that height.
 
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
@@ -49,7 +49,7 @@ struct FlatObjectBuffers {
   cv::Mat outer_near;
   std::vector<std::int64_t> patch_px;   // per patch id: sampled points off the planes
   std::vector<std::int64_t> low_px;     // ... of them within max_height_m of the table
-  std::vector<char> low_patch;          // per patch id: a low patch (id 0: edge pixels)
+  std::vector<char> low_patch;          // per patch id: a low piece
   std::vector<std::int64_t> inside_px;  // per patch id: its pixels inside a region found
   std::vector<std::int32_t> region_id;  // per patch id: the new patch of that region
 };

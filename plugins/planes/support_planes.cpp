@@ -296,10 +296,10 @@ const Param<double> kFlatObjectMaxHeight{
     "flat_object_max_height_m",
     0.02,
     "Rule 7 also averages the points on no plane that lie within this height of the table, "
-    "when they are in no patch (edge pixels) or in a patch that lies that low throughout: the "
-    "upper half of a 1 cm book's noisy top, which the table's plane left as stripes. The "
-    "raised region then stays whole and its mean height is the book's, and the stripes inside "
-    "it join its patch. 0 = the table's points only.",
+    "when they are in a piece of a patch a plane cut that lies that low throughout: the upper "
+    "half of a 1 cm book's noisy top, which the table's plane left as stripes. The raised "
+    "region then stays whole and its mean height is the book's, and the stripes inside it join "
+    "its patch, with its edge pixels that lie that low. 0 = the table's points only.",
     {.unit = "m",
      .min = 0.0,
      .max = 0.1,
