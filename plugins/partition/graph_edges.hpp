@@ -53,7 +53,8 @@ struct CoplanarRule {
   // label or a seam); 0 = never joined this way.
   double touching_max_distance_m = 0.0;
   // A body of the two patches' own blob in the gap occludes too when it stands on their plane
-  // (the plane seen beyond it across the line): a can standing on a board seen in two pieces.
+  // (its patches, and those touching them, lie on or in front of it): a can standing on a board
+  // seen in two pieces.
   bool body_on_surface = true;
 };
 

@@ -11,6 +11,14 @@ double width_across(const std::array<std::int32_t, 4>& box, double pu, double pv
   return std::abs(pu) * (box[2] - box[0] + 1) + std::abs(pv) * (box[3] - box[1] + 1);
 }
 
+// At least one line through, min_gap_px valid gap pixels, and min_front_share of them occluding.
+bool occluded_by(const GapEvidence& gap, std::int32_t occluding_px, std::int32_t min_gap_px,
+                 double min_front_share) {
+  const std::int32_t valid = gap.front_px + gap.own_front_px + gap.other_px;
+  return gap.lines_through > 0 && valid >= min_gap_px && valid > 0 &&
+         static_cast<double>(occluding_px) >= min_front_share * valid;
+}
+
 }  // namespace
 
 FittedPlane plane_between(const FittedPlane& a, const FittedPlane& b) {
@@ -32,16 +40,12 @@ FittedPlane plane_between(const FittedPlane& a, const FittedPlane& b) {
 }
 
 bool is_occluded(const GapEvidence& gap, std::int32_t min_gap_px, double min_front_share) {
-  const std::int32_t valid = gap.front_px + gap.own_front_px + gap.other_px;
-  return gap.lines_through > 0 && valid >= min_gap_px && valid > 0 &&
-         static_cast<double>(gap.front_px) >= min_front_share * valid;
+  return occluded_by(gap, gap.front_px, min_gap_px, min_front_share);
 }
 
 bool is_occluded_by_own_body(const GapEvidence& gap, std::int32_t min_gap_px,
                              double min_front_share) {
-  const std::int32_t valid = gap.front_px + gap.own_front_px + gap.other_px;
-  return gap.lines_through > 0 && valid >= min_gap_px && valid > 0 &&
-         static_cast<double>(gap.front_px + gap.own_front_px) >= min_front_share * valid;
+  return occluded_by(gap, gap.front_px + gap.own_front_px, min_gap_px, min_front_share);
 }
 
 GapEvidence look_between(const GraphNode& a, const GraphNode& b, const FrameImages& images,

@@ -85,7 +85,6 @@ void sample_cells(const cv::Mat& plane_labels, std::int32_t table_label, const c
   low_patch.assign(patch_px.size(), 0);
   if (!low_points) return;
   // The low candidates count where their piece is low throughout; edge pixels (id 0) never.
-  low_patch[0] = 0;
   for (std::size_t id = 1; id < patch_px.size(); ++id) {
     low_patch[id] = id < cut_pieces.size() && cut_pieces[id] != 0 && patch_px[id] > 0 &&
                     static_cast<double>(low_px[id]) >=

@@ -26,8 +26,7 @@ struct EdgeAttachment {
 // of those pixels, in raster order, so that the work follows the edge pixels, not the image.
 // xyz: CV_32FC3, continuous. Neighbours link when the gate finds them close. New blobs that
 // `own_blob_size` does not keep (by their pixel count and the depth of their first pixel) are
-// left out; nullptr
-// makes none (the edge pixels only join the blobs there are).
+// left out; nullptr makes none (the edge pixels only join the blobs there are).
 EdgeAttachment attach_edge_pixels(EuclideanRegions& blobs, const cv::Mat& edges,
                                   std::span<const std::int32_t> edge_pixels, const cv::Mat& xyz,
                                   const algo::NeighbourGate& gate,
