@@ -1,6 +1,7 @@
 #include "facet/algo/plane.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -30,6 +31,12 @@ Eigen::Vector3d PlaneMoments::centroid_m() const {
 }
 
 std::optional<Plane> PlaneMoments::plane() const {
+  const std::optional<PlaneFrame> fitted = frame();
+  if (!fitted) return std::nullopt;
+  return fitted->plane;
+}
+
+std::optional<PlaneFrame> PlaneMoments::frame() const {
   if (count_ < 3) return std::nullopt;
   const double inverse = 1.0 / static_cast<double>(count_);
   const Eigen::Vector3d mean = sum_m_ * inverse;
@@ -46,7 +53,11 @@ std::optional<Plane> PlaneMoments::plane() const {
     normal = -normal;
     offset = -offset;
   }
-  return Plane{normal.cast<float>(), static_cast<float>(offset)};
+  PlaneFrame fitted;
+  fitted.plane = Plane{normal.cast<float>(), static_cast<float>(offset)};
+  fitted.axis_u = solver.eigenvectors().col(2).normalized().cast<float>();
+  fitted.axis_v = normal.cross(solver.eigenvectors().col(2)).normalized().cast<float>();
+  return fitted;
 }
 
 std::optional<Plane> least_squares_plane(std::span<const float> xyz) {

@@ -29,9 +29,11 @@ FittedPlane fit_plane(const BlobSegments& points, std::int32_t begin, std::int32
     moments.add(points.x[k], points.y[k], points.z[k]);
   }
   FittedPlane fitted;
-  const std::optional<algo::Plane> plane = moments.plane();
-  if (!plane) return fitted;
-  static_cast<algo::Plane&>(fitted) = *plane;
+  const std::optional<algo::PlaneFrame> frame = moments.frame();
+  if (!frame) return fitted;
+  static_cast<algo::Plane&>(fitted) = frame->plane;
+  fitted.axis_u = frame->axis_u;
+  fitted.axis_v = frame->axis_v;
   fitted.centroid_m = moments.centroid_m().cast<float>();
   fitted.valid = true;
   return fitted;

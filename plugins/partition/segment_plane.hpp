@@ -13,6 +13,9 @@ namespace facet::partition {
 // signed distance is in front of the surface), with the centroid of the points it was fitted to.
 struct FittedPlane : algo::Plane {
   Eigen::Vector3f centroid_m = Eigen::Vector3f::Zero();
+  // In the plane, the directions of the points' largest and second largest spread.
+  Eigen::Vector3f axis_u = Eigen::Vector3f::UnitX();
+  Eigen::Vector3f axis_v = Eigen::Vector3f::UnitY();
   bool valid = false;  // false for fewer than 3 points or a degenerate (collinear) set
 };
 

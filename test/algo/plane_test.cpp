@@ -74,6 +74,39 @@ TEST(PlaneMoments, AFarCentimetrePatchStillGivesItsPlane) {
   EXPECT_NEAR(plane->offset_m, -normal.dot(centre), 1e-4F);
 }
 
+TEST(PlaneMoments, ItsFrameRunsAlongARectanglesSides) {
+  // A 30 x 10 cm rectangle turned 30 degrees in a tilted plane: the frame's first axis runs along
+  // its long side, the second along its short one, both in the plane and orthogonal.
+  const Eigen::Vector3f normal = Eigen::Vector3f(0.1F, -0.7F, -0.7F).normalized();
+  const Eigen::Vector3f side_a = normal.unitOrthogonal();
+  const Eigen::Vector3f side_b = normal.cross(side_a);
+  const float turn = std::acos(-1.0F) / 6.0F;
+  const Eigen::Vector3f long_side = std::cos(turn) * side_a + std::sin(turn) * side_b;
+  const Eigen::Vector3f short_side = normal.cross(long_side);
+  PlaneMoments moments;
+  for (int i = 0; i <= 60; ++i) {
+    for (int j = 0; j <= 20; ++j) {
+      const Eigen::Vector3f p = Eigen::Vector3f(0.2F, 0.1F, 1.3F) +
+                                (0.005F * static_cast<float>(i) - 0.15F) * long_side +
+                                (0.005F * static_cast<float>(j) - 0.05F) * short_side;
+      moments.add(p.x(), p.y(), p.z());
+    }
+  }
+  const auto frame = moments.frame();
+  ASSERT_TRUE(frame.has_value());
+  EXPECT_GT(std::abs(frame->axis_u.dot(long_side)), 1.0F - 1e-5F);
+  EXPECT_GT(std::abs(frame->axis_v.dot(short_side)), 1.0F - 1e-5F);
+  EXPECT_LT(std::abs(frame->axis_u.dot(frame->plane.normal)), 1e-5F);
+  EXPECT_LT(std::abs(frame->axis_v.dot(frame->plane.normal)), 1e-5F);
+  EXPECT_NEAR(frame->axis_u.norm(), 1.0F, 1e-6F);
+  EXPECT_NEAR(frame->axis_v.norm(), 1.0F, 1e-6F);
+  // The frame's plane is plane()'s.
+  const auto plane = moments.plane();
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_EQ(plane->normal, frame->plane.normal);
+  EXPECT_EQ(plane->offset_m, frame->plane.offset_m);
+}
+
 TEST(PlaneMoments, NoPlaneThroughTooFewOrCollinearPoints) {
   EXPECT_FALSE(least_squares_plane(std::vector<float>{}).has_value());
   EXPECT_FALSE(least_squares_plane(std::vector<float>{0, 0, 1, 0.1F, 0, 1}).has_value());

@@ -33,6 +33,13 @@ struct Plane {
   }
 };
 
+// A plane and two orthogonal unit axes in it.
+struct PlaneFrame {
+  Plane plane;
+  Eigen::Vector3f axis_u = Eigen::Vector3f::UnitX();
+  Eigen::Vector3f axis_v = Eigen::Vector3f::UnitY();
+};
+
 // The first and second moments of a point set, accumulated in double relative to its first
 // point, so that centimetre spreads at metre range lose nothing to cancellation.
 class PlaneMoments {
@@ -59,6 +66,9 @@ class PlaneMoments {
   // eigenvalue, through the centroid. Nothing for fewer than 3 points or points spread in fewer
   // than two directions (second eigenvalue at most kMinSpread_m2: a line, one point).
   std::optional<Plane> plane() const;
+  // That plane with its two in-plane axes: the directions of the points' largest and second
+  // largest spread (unit, orthogonal), a rectangle's sides for the points of one.
+  std::optional<PlaneFrame> frame() const;
 
   static constexpr double kMinSpread_m2 = 1e-10;
 
