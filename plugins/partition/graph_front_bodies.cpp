@@ -1,5 +1,6 @@
 #include "partition/graph_front_bodies.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
@@ -13,6 +14,76 @@ namespace {
 constexpr std::uint8_t kUndecided = 0;  // left for fill_blob_gaps
 constexpr std::uint8_t kInFront = 1;    // a body's, if its body is large enough
 constexpr std::uint8_t kKept = 2;       // the object's it is nearest to
+
+// Two faces of one object on one plane (pieces of a face an edge line broke) share an extent.
+constexpr double kSamePlaneMinCosine = 0.966;  // 15°
+constexpr double kSamePlaneMaxDistanceM = 0.01;
+
+bool on_one_plane(const FittedPlane& a, const FittedPlane& b) {
+  return normal_cosine(a, b) >= kSamePlaneMinCosine &&
+         std::abs(a.signed_distance_m(b.centroid_m.x(), b.centroid_m.y(), b.centroid_m.z())) <=
+             kSamePlaneMaxDistanceM &&
+         std::abs(b.signed_distance_m(a.centroid_m.x(), a.centroid_m.y(), a.centroid_m.z())) <=
+             kSamePlaneMaxDistanceM;
+}
+
+// A face's own extent: its points' range along its plane's axes.
+FaceExtent extent_of(const BlobSegments& points, const Segment& segment, const FittedPlane& plane) {
+  FaceExtent extent;
+  extent.origin_m = plane.centroid_m;
+  extent.axis_u = plane.axis_u;
+  extent.axis_v = plane.axis_v;
+  for (std::int32_t k = segment.begin; k < segment.end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const Eigen::Vector3f d =
+        Eigen::Vector3f(points.x[i], points.y[i], points.z[i]) - extent.origin_m;
+    const float u = d.dot(extent.axis_u);
+    const float v = d.dot(extent.axis_v);
+    extent.min_u_m = std::min(extent.min_u_m, u);
+    extent.max_u_m = std::max(extent.max_u_m, u);
+    extent.min_v_m = std::min(extent.min_v_m, v);
+    extent.max_v_m = std::max(extent.max_v_m, v);
+  }
+  return extent;
+}
+
+// Grows `extent` to hold the corners of `piece`'s rectangle: the piece seen in its plane.
+void add_corners(const FaceExtent& piece, FaceExtent& extent) {
+  for (const float u : {piece.min_u_m, piece.max_u_m}) {
+    for (const float v : {piece.min_v_m, piece.max_v_m}) {
+      const Eigen::Vector3f d =
+          piece.origin_m + u * piece.axis_u + v * piece.axis_v - extent.origin_m;
+      const float eu = d.dot(extent.axis_u);
+      const float ev = d.dot(extent.axis_v);
+      extent.min_u_m = std::min(extent.min_u_m, eu);
+      extent.max_u_m = std::max(extent.max_u_m, eu);
+      extent.min_v_m = std::min(extent.min_v_m, ev);
+      extent.max_v_m = std::max(extent.max_v_m, ev);
+    }
+  }
+}
+
+bool outside(const FaceExtent& extent, const Eigen::Vector3f& point_m, float margin_m) {
+  const Eigen::Vector3f d = point_m - extent.origin_m;
+  const float u = d.dot(extent.axis_u);
+  const float v = d.dot(extent.axis_v);
+  return u < extent.min_u_m - margin_m || u > extent.max_u_m + margin_m ||
+         v < extent.min_v_m - margin_m || v > extent.max_v_m + margin_m;
+}
+
+// Whether a point off every face's plane (by more than on_plane_m) lies beyond the extent of a
+// face that bounds its object, by more than margin_m. A point on a face's plane may be a piece
+// of that face its patch did not reach: a real face's patch often ends short of its corners.
+bool beyond_any(const FlatFaces& faces, const cv::Vec3f& point, float on_plane_m, float margin_m) {
+  const Eigen::Vector3f p(point[0], point[1], point[2]);
+  const bool on_a_face = std::any_of(faces.planes.begin(), faces.planes.end(), [&](const auto& f) {
+    return std::abs(f.signed_distance_m(p.x(), p.y(), p.z())) <= on_plane_m;
+  });
+  if (on_a_face) return false;
+  return std::any_of(faces.extents.begin(), faces.extents.end(), [&](const FaceExtent& extent) {
+    return extent.bounds && outside(extent, p, margin_m);
+  });
+}
 
 bool in_front_of_any(const FlatFaces& faces, const cv::Vec3f& point, double margin_m) {
   return std::any_of(faces.planes.begin(), faces.planes.end(), [&](const FittedPlane& face) {
@@ -40,8 +111,9 @@ bool FrontBodyRule::is_flat_face(double plane_rms_m, double depth_m) const {
   return plane_rms_m <= std::max(face_max_rms_m, face_rms_at_1m_m * depth_m * depth_m);
 }
 
-void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t> group,
-                           std::int32_t id_count, const FrontBodyRule& rule, FacesOfObject& faces) {
+void flat_faces_of_objects(const GraphNodes& graph, const BlobSegments& points,
+                           std::span<const std::int32_t> group, std::int32_t id_count,
+                           const FrontBodyRule& rule, FacesOfObject& faces) {
   const auto ids = static_cast<std::size_t>(std::max(id_count, 0));
   faces.resize(ids);
   for (FlatFaces& object : faces)
@@ -56,6 +128,7 @@ void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t
       extend(object.box_px, node.box_px[0], node.box_px[1]);
       extend(object.box_px, node.box_px[2], node.box_px[3]);
       object.planes.push_back(node.plane);
+      object.nodes.push_back(static_cast<std::int32_t>(i));
     } else {
       curved[id] = true;
     }
@@ -63,11 +136,33 @@ void flat_faces_of_objects(const GraphNodes& graph, std::span<const std::int32_t
   for (std::size_t id = 0; id < ids; ++id) {
     if (curved[id]) faces[id] = FlatFaces{};
   }
+  if (rule.beyond_margin_m <= 0.0) return;
+  // Each face's extent holds its object's faces on its plane too, by the corners of their own
+  // extents: pieces of one face that an edge line broke.
+  std::vector<FaceExtent> own;
+  for (FlatFaces& object : faces) {
+    own.clear();
+    for (const std::int32_t n : object.nodes) {
+      const GraphNode& node = graph.nodes[static_cast<std::size_t>(n)];
+      FaceExtent extent =
+          extent_of(points, points.segments[static_cast<std::size_t>(node.segment)], node.plane);
+      extent.bounds = node.plane_rms_m <= rule.face_max_rms_m;
+      own.push_back(extent);
+    }
+    object.extents = own;
+    for (std::size_t f = 0; f < own.size(); ++f) {
+      if (!own[f].bounds) continue;
+      for (std::size_t g = 0; g < own.size(); ++g) {
+        if (g != f && on_one_plane(object.planes[f], object.planes[g]))
+          add_corners(own[g], object.extents[f]);
+      }
+    }
+  }
 }
 
 std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const cv::Mat& points,
                                    const FacesOfObject& faces, const FrontBodyRule& rule,
-                                   FrontBodyBuffers& buffers, std::int32_t next_id) {
+                                   double fx_px, FrontBodyBuffers& buffers, std::int32_t next_id) {
   // The work is on the left-over pixels only, a few per cent of the image, and on the rectangle
   // around them for the bodies' labelling.
   std::vector<std::int32_t>& gaps = buffers.gaps;
@@ -97,7 +192,11 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
     if (!std::isfinite(point[i][2])) continue;
     const auto id = static_cast<std::size_t>(nearest[i]);
     if (id >= faces.size() || faces[id].empty()) continue;
-    if (in_front_of_any(faces[id], point[i], rule.margin_m)) {
+    if (in_front_of_any(faces[id], point[i], rule.margin_m) ||
+        (rule.beyond_margin_m > 0.0 && !faces[id].extents.empty() &&
+         beyond_any(faces[id], point[i], static_cast<float>(rule.margin_m),
+                    static_cast<float>(rule.beyond_margin_m +
+                                       rule.beyond_band_px * point[i][2] / fx_px)))) {
       state[i] = kInFront;
       any_in_front = true;
     } else {

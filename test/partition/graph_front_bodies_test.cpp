@@ -40,7 +40,8 @@ TEST(FrontBodies, PixelsInFrontOfAFlatFaceAreABodyOfTheirOwn) {
   // Columns 40-49 continue the face (on its plane), columns 50-79 stand 5 cm in front of it.
   LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.65F));
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 3);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, 525.0, buffers, 2), 3);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(50, 80) != 2), 0);
   // The pixels on the face's plane went to the face's object first, not to the new body.
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(0, 50) != 1), 0);
@@ -53,7 +54,8 @@ TEST(FrontBodies, PixelsOnOrBehindTheFaceAreItsObject) {
   s.points.colRange(60, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.8F));
   // 1 cm in front: within the margin.
   s.points.colRange(40, 50).setTo(cv::Scalar(0.0F, 0.0F, 1.69F));
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 2);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, 525.0, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
 }
 
@@ -62,7 +64,8 @@ TEST(FrontBodies, ASmallBodyIsLeftForTheFill) {
   // 5 x 5 = 25 pixels in front, fewer than the 30 a body needs.
   LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.points(cv::Rect(60, 10, 5, 5)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 2);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, 525.0, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects == 0), 25);
   EXPECT_EQ(buffers.gaps.size(), 25U);  // what is left, listed for the fill
   fill_blob_gaps(s.objects, s.blobs, 2);
@@ -75,7 +78,7 @@ TEST(FrontBodies, AnObjectWithoutFlatFacesIsLeftAlone) {
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   const cv::Mat before = s.objects.clone();
   const FacesOfObject none(3);
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, none, kRule, buffers, 2), 2);
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, none, kRule, 525.0, buffers, 2), 2);
   EXPECT_EQ(cv::countNonZero(s.objects != before), 0);
 }
 
@@ -85,7 +88,8 @@ TEST(FrontBodies, OffLeavesEveryPixelAsItWas) {
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   const cv::Mat before = s.objects.clone();
   const FrontBodyRule off{0.0, 30, 0.003, 0.0011};
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), off, buffers, 2), 2);
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), off, 525.0, buffers, 2),
+            2);
   EXPECT_EQ(cv::countNonZero(s.objects != before), 0);
 }
 
@@ -95,7 +99,8 @@ TEST(FrontBodies, PixelsWithoutAPointOrOutsideEveryBlobAreNotTouched) {
   s.points.colRange(50, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   s.points.colRange(40, 50).setTo(cv::Scalar::all(std::numeric_limits<float>::quiet_NaN()));
   s.blobs.colRange(70, 80).setTo(0);
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 2), 3);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, 525.0, buffers, 2), 3);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 50)), 0);  // no point: left for the fill
   EXPECT_EQ(buffers.gaps.size(), 400U);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(50, 70) != 2), 0);
@@ -109,7 +114,8 @@ TEST(FrontBodies, ABodyTouchingAnotherObjectsShareJoinsThatObject) {
   LeftOverScene s = left_over_scene(80, 40, 40, 1.7F);
   s.objects.colRange(70, 80).setTo(2);
   s.points.colRange(40, 80).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, buffers, 3), 3);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, one_face(), kRule, 525.0, buffers, 3), 3);
   fill_blob_gaps(s.objects, s.blobs, 3);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(0, 40) != 1), 0);
   EXPECT_EQ(cv::countNonZero(s.objects.colRange(40, 80) != 2), 0);
@@ -133,8 +139,9 @@ FacesOfObject floor_face() {
 TEST(FrontBodies, WallsAroundTheOnlyFaceStayItsObject) {
   FrontBodyBuffers buffers;
   LeftOverScene s = container_scene();
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), kRule, buffers, 2),
-            2);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), kRule, 525.0, buffers, 2),
+      2);
   EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
   EXPECT_TRUE(buffers.gaps.empty());
 }
@@ -144,7 +151,9 @@ TEST(FrontBodies, WithoutKeepEnclosingTheWallsAreCutOff) {
   LeftOverScene s = container_scene();
   FrontBodyRule rule = kRule;
   rule.keep_enclosing = false;
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), rule, buffers, 2), 4);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), rule, 525.0, buffers, 2),
+      4);
   EXPECT_EQ(cv::countNonZero(s.objects(cv::Rect(20, 20, 10, 40)) == 1), 0);
 }
 
@@ -154,8 +163,9 @@ TEST(FrontBodies, WallsOnOneSideOnlyAreABody) {
   FrontBodyBuffers buffers;
   LeftOverScene s = container_scene();
   s.points(cv::Rect(42, 20, 18, 40)).setTo(cv::Scalar(0.0F, 0.0F, 1.7F));
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), kRule, buffers, 2),
-            3);
+  EXPECT_EQ(
+      claim_bodies_in_front(s.objects, s.blobs, s.points, floor_face(), kRule, 525.0, buffers, 2),
+      3);
   EXPECT_EQ(cv::countNonZero(s.objects(cv::Rect(20, 20, 10, 40)) != 2), 0);
 }
 
@@ -166,7 +176,7 @@ TEST(FrontBodies, ABodyInTheMiddleOfAFaceIsCutOff) {
   s.objects(cv::Rect(35, 15, 10, 10)).setTo(0);
   s.points(cv::Rect(35, 15, 10, 10)).setTo(cv::Scalar(0.0F, 0.0F, 1.6F));
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, one_face({0, 0, 79, 39}), kRule,
-                                  buffers, 2),
+                                  525.0, buffers, 2),
             3);
   EXPECT_EQ(cv::countNonZero(s.objects == 2), 100);
 }
@@ -197,7 +207,7 @@ TEST(FrontBodies, AnObjectWithACurvedFaceHasNoFlatFaces) {
   graph.nodes[1].plane_rms_m = 0.01;
   const std::vector<std::int32_t> group{0, 0, 1, 2};
   FacesOfObject faces;
-  flat_faces_of_objects(graph, group, 4, kRule, faces);
+  flat_faces_of_objects(graph, BlobSegments{}, group, 4, kRule, faces);
   ASSERT_EQ(faces.size(), 4U);
   EXPECT_TRUE(faces[0].empty());
   EXPECT_TRUE(faces[1].empty());
@@ -212,7 +222,7 @@ TEST(FrontBodies, AnObjectsFacesAreBoxedTogether) {
   graph.nodes[1].box_px = {5, 20, 30, 25};
   const std::vector<std::int32_t> group{0, 0};
   FacesOfObject faces;
-  flat_faces_of_objects(graph, group, 2, kRule, faces);
+  flat_faces_of_objects(graph, BlobSegments{}, group, 2, kRule, faces);
   ASSERT_EQ(faces.size(), 2U);
   EXPECT_EQ(faces[1].planes.size(), 2U);
   EXPECT_EQ(faces[1].box_px, (std::array<std::int32_t, 4>{0, 0, 30, 25}));

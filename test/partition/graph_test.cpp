@@ -409,6 +409,48 @@ TEST(PartitionGraph, BowlStaysWholeWithTheFrontBodyRule) {
   EXPECT_EQ(objects.count, 1);
 }
 
+TEST(PartitionGraph, ASmallBoxBesideATallerOneIsAnObjectOfItsOwn) {
+  // A small box without a patch touching the right side of a taller box, its front 2 cm behind
+  // the other's: neither in front of the tall box's front nor of its top, so the front body rule
+  // shares it out to the tall box; it lies beyond both faces' extents along x, and on neither's
+  // plane.
+  Tabletop t;
+  t.box(0.0, 0.0, {0.05, 0.04, 0.08});
+  t.box(0.09, 0.0, {0.04, 0.02, 0.04});
+  TableScene s = on_table(t);
+  s.scene.face.setTo(0, s.scene.object == 2);
+  PartitionInput input = graph_input(s.scene, s.table);
+  // Seen past the tall box's edge the small one is about 2 cm further away: one blob, as
+  // grow.blobs makes it where its step grows with the depth.
+  input.blobs = label_image(blobs_by_distance(input.points.points, input.blobs.labels > 0, 0.03));
+  ASSERT_EQ(count_of(input.blobs), 1);
+  // Without the unclaimed cores: the small box, 8 cm wide, would be one.
+  const std::map<std::string, ParamValue> front{{"front_body_margin_m", 0.015},
+                                                {"unclaimed_core_radius_px", 0.0}};
+  EXPECT_EQ(run_graph(input, front).count, 1);
+  std::map<std::string, ParamValue> beyond = front;
+  beyond["front_body_beyond_margin_m"] = 0.01;
+  const LabelImage objects = run_graph(input, beyond);
+  EXPECT_EQ(objects.count, 2);
+  // The small box's pixels within the margin of the tall one's extent (1 cm and 6 px, about a
+  // quarter of its width here) stay with the tall one.
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.7));
+}
+
+TEST(PartitionGraph, ABoxStaysWholeWhenItsFacesBoundIt) {
+  // Its side faces without patches (left over): they lie within the top's and the front's extent.
+  Tabletop t;
+  t.box(0.0, 0.0, {0.06, 0.04, 0.05}, 25.0);
+  TableScene s = on_table(t);
+  const PartitionInput full = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(full.patches), 3);
+  std::map<std::string, ParamValue> beyond{{"front_body_margin_m", 0.015},
+                                           {"front_body_beyond_margin_m", 0.01}};
+  const LabelImage objects = run_graph(full, beyond);
+  EXPECT_EQ(objects.count, 1);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+}
+
 TEST(PartitionGraph, BowlTouchingACanIsTwoObjects) {
   const TableScene s = bowl_touching_can();
   const PartitionInput input = graph_input(s.scene, s.table);
