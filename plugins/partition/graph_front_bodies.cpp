@@ -27,6 +27,17 @@ bool on_one_plane(const FittedPlane& a, const FittedPlane& b) {
              kSamePlaneMaxDistanceM;
 }
 
+// Grows `extent` to hold `point_m`.
+void include(FaceExtent& extent, const Eigen::Vector3f& point_m) {
+  const Eigen::Vector3f d = point_m - extent.origin_m;
+  const float u = d.dot(extent.axis_u);
+  const float v = d.dot(extent.axis_v);
+  extent.min_u_m = std::min(extent.min_u_m, u);
+  extent.max_u_m = std::max(extent.max_u_m, u);
+  extent.min_v_m = std::min(extent.min_v_m, v);
+  extent.max_v_m = std::max(extent.max_v_m, v);
+}
+
 // A face's own extent: its points' range along its plane's axes.
 FaceExtent extent_of(const BlobSegments& points, const Segment& segment, const FittedPlane& plane) {
   FaceExtent extent;
@@ -35,31 +46,16 @@ FaceExtent extent_of(const BlobSegments& points, const Segment& segment, const F
   extent.axis_v = plane.axis_v;
   for (std::int32_t k = segment.begin; k < segment.end; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    const Eigen::Vector3f d =
-        Eigen::Vector3f(points.x[i], points.y[i], points.z[i]) - extent.origin_m;
-    const float u = d.dot(extent.axis_u);
-    const float v = d.dot(extent.axis_v);
-    extent.min_u_m = std::min(extent.min_u_m, u);
-    extent.max_u_m = std::max(extent.max_u_m, u);
-    extent.min_v_m = std::min(extent.min_v_m, v);
-    extent.max_v_m = std::max(extent.max_v_m, v);
+    include(extent, Eigen::Vector3f(points.x[i], points.y[i], points.z[i]));
   }
   return extent;
 }
 
 // Grows `extent` to hold the corners of `piece`'s rectangle: the piece seen in its plane.
-void add_corners(const FaceExtent& piece, FaceExtent& extent) {
+void include_corners(const FaceExtent& piece, FaceExtent& extent) {
   for (const float u : {piece.min_u_m, piece.max_u_m}) {
-    for (const float v : {piece.min_v_m, piece.max_v_m}) {
-      const Eigen::Vector3f d =
-          piece.origin_m + u * piece.axis_u + v * piece.axis_v - extent.origin_m;
-      const float eu = d.dot(extent.axis_u);
-      const float ev = d.dot(extent.axis_v);
-      extent.min_u_m = std::min(extent.min_u_m, eu);
-      extent.max_u_m = std::max(extent.max_u_m, eu);
-      extent.min_v_m = std::min(extent.min_v_m, ev);
-      extent.max_v_m = std::max(extent.max_v_m, ev);
-    }
+    for (const float v : {piece.min_v_m, piece.max_v_m})
+      include(extent, piece.origin_m + u * piece.axis_u + v * piece.axis_v);
   }
 }
 
@@ -154,7 +150,7 @@ void flat_faces_of_objects(const GraphNodes& graph, const BlobSegments& points,
       if (!own[f].bounds) continue;
       for (std::size_t g = 0; g < own.size(); ++g) {
         if (g != f && on_one_plane(object.planes[f], object.planes[g]))
-          add_corners(own[g], object.extents[f]);
+          include_corners(own[g], object.extents[f]);
       }
     }
   }

@@ -25,15 +25,6 @@ void set_columns(cv::Mat& points, int first, int last, float z_m) {
   }
 }
 
-FittedPlane facing_plane(float z_m) {
-  FittedPlane plane;
-  plane.normal = {0.0F, 0.0F, -1.0F};
-  plane.offset_m = z_m;
-  plane.centroid_m = {0.0F, 0.0F, z_m};
-  plane.valid = true;
-  return plane;
-}
-
 // Object 1's one face: the plane z = 1.7 m over columns 0-39 (x up to -1.7 / 525 m), rows
 // anywhere (its v range is wide open).
 FacesOfObject box_front(bool bounds = true) {

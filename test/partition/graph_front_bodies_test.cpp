@@ -14,16 +14,6 @@
 namespace facet::partition {
 namespace {
 
-// The plane z = z_m, facing the camera.
-FittedPlane facing_plane(float z_m) {
-  FittedPlane plane;
-  plane.normal = {0.0F, 0.0F, -1.0F};
-  plane.offset_m = z_m;
-  plane.centroid_m = {0.0F, 0.0F, z_m};
-  plane.valid = true;
-  return plane;
-}
-
 // Object 1 has the plane z = 1.7 m as its one flat face, seen in the image box `box_px`; ids 0
 // and 2 have none.
 FacesOfObject one_face(const std::array<std::int32_t, 4>& box_px = {0, 0, 39, 39}) {

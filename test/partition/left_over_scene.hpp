@@ -4,6 +4,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "partition/segment_plane.hpp"
+
 namespace facet::partition {
 
 struct LeftOverScene {
@@ -19,6 +21,16 @@ inline LeftOverScene left_over_scene(int width_px, int height_px, int claimed_co
   s.objects.colRange(0, claimed_cols).setTo(1);
   s.points = cv::Mat(height_px, width_px, CV_32FC3, cv::Scalar(0.0F, 0.0F, z_m));
   return s;
+}
+
+// The plane z = z_m, facing the camera: a face of the claimed object.
+inline FittedPlane facing_plane(float z_m) {
+  FittedPlane plane;
+  plane.normal = {0.0F, 0.0F, -1.0F};
+  plane.offset_m = z_m;
+  plane.centroid_m = {0.0F, 0.0F, z_m};
+  plane.valid = true;
+  return plane;
 }
 
 }  // namespace facet::partition
