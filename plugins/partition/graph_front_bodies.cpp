@@ -190,7 +190,7 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
     if (id >= faces.size() || faces[id].empty()) continue;
     if (in_front_of_any(faces[id], point[i], rule.margin_m) ||
         (rule.beyond_margin_m > 0.0 && !faces[id].extents.empty() &&
-         beyond_any(faces[id], point[i], static_cast<float>(rule.margin_m),
+         beyond_any(faces[id], point[i], static_cast<float>(rule.on_plane_m),
                     static_cast<float>(rule.beyond_margin_m +
                                        rule.beyond_band_px * point[i][2] / fx_px)))) {
       state[i] = kInFront;

@@ -32,12 +32,13 @@ struct FrontBodyRule {
   // open container whose only patch is its floor. They stay the object's.
   bool keep_enclosing = true;
   // A box's face spans the box in both directions of its plane, so a left-over point on no face's
-  // plane (within margin_m) that lies beyond the extent of one of its object's planar faces (RMS
-  // within face_max_rms_m), by more than beyond_margin_m plus beyond_band_px pixels at its
+  // plane (within on_plane_m) that lies beyond the extent of one of its object's planar faces
+  // (RMS within face_max_rms_m), by more than beyond_margin_m plus beyond_band_px pixels at its
   // depth, is another body's too: a can beside a box, lower than its top. The band is what the
   // face's patch loses to the edges along its border. 0 = off.
   double beyond_margin_m = 0.0;
   double beyond_band_px = 6.0;
+  double on_plane_m = 0.01;
 
   bool is_flat_face(double plane_rms_m, double depth_m) const;
 };

@@ -37,7 +37,9 @@ const Param<bool> kConvex{"convex",
 const Param<double> kConvexToleranceM{
     "convex_tolerance_m",
     0.01,
-    "Points closer than this to the other patch's plane count as behind it.",
+    "Points closer than this to the other patch's plane count as behind it. Also the "
+    "tolerance of 'on a face's plane' for unclaimed_core_radius_px and "
+    "front_body_beyond_margin_m.",
     {.unit = "m", .min = 0.0, .max = 1.0, .origin = "partition.convex"}};
 const Param<double> kConvexMinBehindShare{
     "convex_min_behind_share",
@@ -301,7 +303,7 @@ const Param<double> kFrontBodyBeyondMarginM{
     0.0,
     "With front_body_margin_m: a box's face spans the box in both directions of its plane, "
     "so left-over pixels that would join an object whose faces are all flat, but lie on none "
-    "of their planes (within front_body_margin_m) and beyond the extent of one of its "
+    "of their planes (within convex_tolerance_m) and beyond the extent of one of its "
     "planar faces (RMS within planar_max_rms_m) in that face's plane, by more than this plus "
     "front_body_beyond_band_px pixels at their depth, belong to another body too: a box or "
     "a can beside a box, lower than its top and not in front of its face. The extent runs "
@@ -385,7 +387,7 @@ PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(kEmitGraph(pa
   front_rule_ = {kFrontBodyMarginM(params),       kFrontBodyMinPx(params),
                  kPlanarMaxRmsM(params),          kFrontBodyFaceRmsAt1mM(params),
                  kFrontBodyKeepEnclosing(params), kFrontBodyBeyondMarginM(params),
-                 kFrontBodyBeyondBandPx(params)};
+                 kFrontBodyBeyondBandPx(params),  kConvexToleranceM(params)};
   rule_.nodes = {kMinPatchPx(params), kPlanarMaxRmsM(params)};
   rule_.convex = kConvex(params);
   rule_.convex_rule = {kConvexToleranceM(params), kConvexMinBehindShare(params),

@@ -46,6 +46,7 @@ FrontBodyRule beyond_rule() {
   FrontBodyRule rule{0.015, 30, 0.003, 0.0011};
   rule.beyond_margin_m = 0.01;
   rule.beyond_band_px = 6.0;
+  rule.on_plane_m = 0.01;
   return rule;
 }
 
@@ -88,6 +89,22 @@ TEST(BeyondFace, PixelsOnTheFacesPlaneAreAPieceOfTheFace) {
                                   buffers, 2),
             2);
   EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+}
+
+TEST(BeyondFace, OnThePlaneMeansWithinOnPlaneM) {
+  // 1.5 cm behind the face's plane: off it by 1 cm, on it by 2 cm.
+  FrontBodyBuffers buffers;
+  LeftOverScene s = box_and_beside(1.715F);
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, box_front(), beyond_rule(), kFx,
+                                  buffers, 2),
+            3);
+  LeftOverScene wide = box_and_beside(1.715F);
+  FrontBodyRule rule = beyond_rule();
+  rule.on_plane_m = 0.02;
+  EXPECT_EQ(claim_bodies_in_front(wide.objects, wide.blobs, wide.points, box_front(), rule, kFx,
+                                  buffers, 2),
+            2);
+  EXPECT_EQ(cv::countNonZero(wide.objects != 1), 0);
 }
 
 TEST(BeyondFace, PixelsOnAnotherFacesPlaneAreTheObjects) {
