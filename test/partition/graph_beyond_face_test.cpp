@@ -59,6 +59,13 @@ LeftOverScene box_and_beside(float beside_z_m) {
   return s;
 }
 
+// Runs the rule on `s` and expects no body: every pixel stays object 1's.
+void expect_no_body(LeftOverScene s, const FacesOfObject& faces, const FrontBodyRule& rule) {
+  FrontBodyBuffers buffers;
+  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, faces, rule, kFx, buffers, 2), 2);
+  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+}
+
 TEST(BeyondFace, PixelsBeyondAFacesExtentAreABodyOfTheirOwn) {
   FrontBodyBuffers buffers;
   LeftOverScene s = box_and_beside(1.75F);
@@ -72,23 +79,14 @@ TEST(BeyondFace, PixelsBeyondAFacesExtentAreABodyOfTheirOwn) {
 }
 
 TEST(BeyondFace, OffItIsTheObjectsWhenNotInFront) {
-  FrontBodyBuffers buffers;
-  LeftOverScene s = box_and_beside(1.75F);
   FrontBodyRule rule = beyond_rule();
   rule.beyond_margin_m = 0.0;
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, box_front(), rule, kFx, buffers, 2),
-            2);
-  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+  expect_no_body(box_and_beside(1.75F), box_front(), rule);
 }
 
 TEST(BeyondFace, PixelsOnTheFacesPlaneAreAPieceOfTheFace) {
   // A face whose patch ended short of its corner: the rest lies on its plane.
-  FrontBodyBuffers buffers;
-  LeftOverScene s = box_and_beside(1.705F);
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, box_front(), beyond_rule(), kFx,
-                                  buffers, 2),
-            2);
-  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+  expect_no_body(box_and_beside(1.705F), box_front(), beyond_rule());
 }
 
 TEST(BeyondFace, OnThePlaneMeansWithinOnPlaneM) {
@@ -98,38 +96,24 @@ TEST(BeyondFace, OnThePlaneMeansWithinOnPlaneM) {
   EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, box_front(), beyond_rule(), kFx,
                                   buffers, 2),
             3);
-  LeftOverScene wide = box_and_beside(1.715F);
   FrontBodyRule rule = beyond_rule();
   rule.on_plane_m = 0.02;
-  EXPECT_EQ(claim_bodies_in_front(wide.objects, wide.blobs, wide.points, box_front(), rule, kFx,
-                                  buffers, 2),
-            2);
-  EXPECT_EQ(cv::countNonZero(wide.objects != 1), 0);
+  expect_no_body(box_and_beside(1.715F), box_front(), rule);
 }
 
 TEST(BeyondFace, PixelsOnAnotherFacesPlaneAreTheObjects) {
   // The object's second face, z = 1.75 m, without an extent that bounds it: the pixels on its
   // plane beyond the first face are a piece of the second.
-  FrontBodyBuffers buffers;
-  LeftOverScene s = box_and_beside(1.75F);
   FacesOfObject faces = box_front();
   faces[1].planes.push_back(facing_plane(1.75F));
   faces[1].extents.push_back(FaceExtent{});
-  EXPECT_EQ(
-      claim_bodies_in_front(s.objects, s.blobs, s.points, faces, beyond_rule(), kFx, buffers, 2),
-      2);
-  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+  expect_no_body(box_and_beside(1.75F), faces, beyond_rule());
 }
 
 TEST(BeyondFace, AFaceThatIsNotPlanarBoundsNothing) {
   // A far face, flat only by the RMS its disparity steps allow, or a cylinder's side far away:
   // its patch may cover a part of it, so its extent is not the object's.
-  FrontBodyBuffers buffers;
-  LeftOverScene s = box_and_beside(1.75F);
-  EXPECT_EQ(claim_bodies_in_front(s.objects, s.blobs, s.points, box_front(false), beyond_rule(),
-                                  kFx, buffers, 2),
-            2);
-  EXPECT_EQ(cv::countNonZero(s.objects != 1), 0);
+  expect_no_body(box_and_beside(1.75F), box_front(false), beyond_rule());
 }
 
 // Gathered points of three flat nodes of one object: two pieces of a face z = 1 m (x from -0.10
