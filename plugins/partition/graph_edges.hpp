@@ -65,10 +65,11 @@ TouchingNodes touching_nodes(const GraphNodes& graph, const PatchNeighbours& nei
 
 // coplanar across an occluder: two planar patches that do not touch, on one plane, with the
 // pixels between them in the image in front of that plane (graph_gap.hpp). With
-// touching_max_distance_m, also two touching patches of one blob on one plane.
-void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
-                        const TouchingNodes& touching, const CoplanarRule& rule,
-                        std::vector<GraphEdge>& edges);
+// touching_max_distance_m, also two touching patches of one blob on one plane. `points` holds
+// the nodes' points (body_on_surface counts a body's points behind the plane there).
+void add_coplanar_edges(const BlobSegments& points, const GraphNodes& graph,
+                        const FrameImages& images, const TouchingNodes& touching,
+                        const CoplanarRule& rule, std::vector<GraphEdge>& edges);
 
 struct CurvatureRule {
   double tolerance_m = 0.005;      // a point within this of the joint quadric fits it

@@ -12,36 +12,14 @@
 namespace facet::partition {
 namespace {
 
-double distance_to(const FittedPlane& plane, const Eigen::Vector3f& point) {
-  return static_cast<double>(plane.signed_distance_m(point.data()));
-}
-
-// Pixels of a node more than margin_m behind the surface.
-std::int32_t pixels_behind(const GraphNode& node, const FrameImages& images,
-                           const FittedPlane& surface, double margin_m) {
-  const cv::Mat& patches = *images.patches;
-  std::int32_t behind = 0;
-  for (int v = node.box_px[1]; v <= node.box_px[3]; ++v) {
-    const auto* patch = patches.ptr<std::int32_t>(v);
-    const auto* blob = images.blobs->ptr<std::int32_t>(v);
-    const auto* point = images.points->ptr<cv::Vec3f>(v);
-    for (int u = node.box_px[0]; u <= node.box_px[2]; ++u) {
-      if (patch[u] != node.patch || blob[u] != node.blob) continue;
-      const cv::Vec3f& p = point[u];
-      if (surface.signed_distance_m(p[0], p[1], p[2]) < -margin_m) ++behind;  // false for NaN
-    }
-  }
-  return behind;
-}
-
 // Whether the body in the gap between nodes i and j stands on their surface: its patches (in the
 // two pieces' blobs) and the patches touching them, but for the two pieces, each have at most a
 // fifth of their pixels behind the surface. A can on a board ends at the board; a taller box
 // between two equal boxes has a front face that reaches down to the table. A body without a
 // patch gives no evidence.
 bool body_stands_on(const FittedPlane& surface, const std::vector<std::int32_t>& body_patches,
-                    std::int32_t i, std::int32_t j, const GraphNodes& graph,
-                    const TouchingNodes& touching, const FrameImages& images, double margin_m) {
+                    std::int32_t i, std::int32_t j, const BlobSegments& points,
+                    const GraphNodes& graph, const TouchingNodes& touching, double margin_m) {
   const GraphNode& a = graph.nodes[static_cast<std::size_t>(i)];
   const GraphNode& b = graph.nodes[static_cast<std::size_t>(j)];
   std::vector<std::int32_t> body;
@@ -63,16 +41,18 @@ bool body_stands_on(const FittedPlane& surface, const std::vector<std::int32_t>&
   for (const std::int32_t n : body) {
     if (n == i || n == j) continue;
     const GraphNode& node = graph.nodes[static_cast<std::size_t>(n)];
-    if (5 * pixels_behind(node, images, surface, margin_m) > node.size_px) return false;
+    const Segment& segment = points.segments[static_cast<std::size_t>(node.segment)];
+    if (5 * count_behind(points, surface, segment.begin, segment.end, margin_m) > node.size_px)
+      return false;
   }
   return true;
 }
 
 }  // namespace
 
-void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
-                        const TouchingNodes& touching, const CoplanarRule& rule,
-                        std::vector<GraphEdge>& edges) {
+void add_coplanar_edges(const BlobSegments& points, const GraphNodes& graph,
+                        const FrameImages& images, const TouchingNodes& touching,
+                        const CoplanarRule& rule, std::vector<GraphEdge>& edges) {
   std::vector<std::int32_t> planar;
   for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
     const GraphNode& node = graph.nodes[i];
@@ -91,14 +71,13 @@ void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
       const GraphNode& b = graph.nodes[static_cast<std::size_t>(j)];
       if (rule.across_blobs_only && a.blob == b.blob) continue;
       if (normal_cosine(a.plane, b.plane) < min_cos) continue;
-      const double a_off_b = std::abs(distance_to(b.plane, a.plane.centroid_m));
-      const double b_off_a = std::abs(distance_to(a.plane, b.plane.centroid_m));
-      if (std::max(a_off_b, b_off_a) > rule.max_distance_m) continue;
+      const double offset_m = centroid_offset_m(a.plane, b.plane);
+      if (offset_m > rule.max_distance_m) continue;
       // Touching patches meet at a step or a crease (the convex feature's), or, on one plane
       // within a blob, are one surface broken by an edge line.
       if (std::binary_search(touching_a.begin(), touching_a.end(), j)) {
         if (rule.touching_max_distance_m > 0.0 && a.blob == b.blob &&
-            std::max(a_off_b, b_off_a) <= rule.touching_max_distance_m) {
+            offset_m <= rule.touching_max_distance_m) {
           edges.push_back({i, j, EdgeFeature::coplanar});
         }
         continue;
@@ -119,8 +98,8 @@ void add_coplanar_edges(const GraphNodes& graph, const FrameImages& images,
     const bool occluded = is_occluded(gap, rule.min_gap_px, rule.min_front_share) ||
                           (rule.body_on_surface &&
                            is_occluded_by_own_body(gap, rule.min_gap_px, rule.min_front_share) &&
-                           body_stands_on(surface, gap.body_patches, pair.a, pair.b, graph,
-                                          touching, images, rule.front_margin_m));
+                           body_stands_on(surface, gap.body_patches, pair.a, pair.b, points, graph,
+                                          touching, rule.front_margin_m));
     if (!occluded) continue;
     edges.push_back({pair.a, pair.b, EdgeFeature::coplanar});
   }

@@ -21,21 +21,22 @@ constexpr double kSamePlaneMaxDistanceM = 0.01;
 
 bool on_one_plane(const FittedPlane& a, const FittedPlane& b) {
   return normal_cosine(a, b) >= kSamePlaneMinCosine &&
-         std::abs(a.signed_distance_m(b.centroid_m.x(), b.centroid_m.y(), b.centroid_m.z())) <=
-             kSamePlaneMaxDistanceM &&
-         std::abs(b.signed_distance_m(a.centroid_m.x(), a.centroid_m.y(), a.centroid_m.z())) <=
-             kSamePlaneMaxDistanceM;
+         centroid_offset_m(a, b) <= kSamePlaneMaxDistanceM;
+}
+
+// A point's coordinates along the extent's axes.
+Eigen::Vector2f in_plane(const FaceExtent& extent, const Eigen::Vector3f& point_m) {
+  const Eigen::Vector3f d = point_m - extent.origin_m;
+  return {d.dot(extent.axis_u), d.dot(extent.axis_v)};
 }
 
 // Grows `extent` to hold `point_m`.
 void include(FaceExtent& extent, const Eigen::Vector3f& point_m) {
-  const Eigen::Vector3f d = point_m - extent.origin_m;
-  const float u = d.dot(extent.axis_u);
-  const float v = d.dot(extent.axis_v);
-  extent.min_u_m = std::min(extent.min_u_m, u);
-  extent.max_u_m = std::max(extent.max_u_m, u);
-  extent.min_v_m = std::min(extent.min_v_m, v);
-  extent.max_v_m = std::max(extent.max_v_m, v);
+  const Eigen::Vector2f uv = in_plane(extent, point_m);
+  extent.min_u_m = std::min(extent.min_u_m, uv.x());
+  extent.max_u_m = std::max(extent.max_u_m, uv.x());
+  extent.min_v_m = std::min(extent.min_v_m, uv.y());
+  extent.max_v_m = std::max(extent.max_v_m, uv.y());
 }
 
 // A face's own extent: its points' range along its plane's axes.
@@ -60,30 +61,31 @@ void include_corners(const FaceExtent& piece, FaceExtent& extent) {
 }
 
 bool outside(const FaceExtent& extent, const Eigen::Vector3f& point_m, float margin_m) {
-  const Eigen::Vector3f d = point_m - extent.origin_m;
-  const float u = d.dot(extent.axis_u);
-  const float v = d.dot(extent.axis_v);
-  return u < extent.min_u_m - margin_m || u > extent.max_u_m + margin_m ||
-         v < extent.min_v_m - margin_m || v > extent.max_v_m + margin_m;
+  const Eigen::Vector2f uv = in_plane(extent, point_m);
+  return uv.x() < extent.min_u_m - margin_m || uv.x() > extent.max_u_m + margin_m ||
+         uv.y() < extent.min_v_m - margin_m || uv.y() > extent.max_v_m + margin_m;
 }
 
-// Whether a point off every face's plane (by more than on_plane_m) lies beyond the extent of a
-// face that bounds its object, by more than margin_m. A point on a face's plane may be a piece
-// of that face its patch did not reach: a real face's patch often ends short of its corners.
-bool beyond_any(const FlatFaces& faces, const cv::Vec3f& point, float on_plane_m, float margin_m) {
+// Whether a left-over point with object `faces` is another body's: more than margin_m in front
+// of one of the faces' planes, or (with beyond_margin_m) on none of them (within on_plane_m) and
+// beyond the extent of a face that bounds the object. A point on a face's plane may be a piece of
+// that face its patch did not reach: a real face's patch often ends short of its corners. One
+// pass over the planes answers both.
+bool another_bodys(const FlatFaces& faces, const cv::Vec3f& point, const FrontBodyRule& rule,
+                   double fx_px) {
+  const auto on_plane_m = static_cast<float>(rule.on_plane_m);
+  bool on_a_face = false;
+  for (const FittedPlane& face : faces.planes) {
+    const float distance_m = face.signed_distance_m(point[0], point[1], point[2]);
+    if (distance_m > rule.margin_m) return true;
+    on_a_face = on_a_face || std::abs(distance_m) <= on_plane_m;
+  }
+  if (on_a_face || rule.beyond_margin_m <= 0.0 || faces.extents.empty()) return false;
+  const auto margin_m =
+      static_cast<float>(rule.beyond_margin_m + rule.beyond_band_px * point[2] / fx_px);
   const Eigen::Vector3f p(point[0], point[1], point[2]);
-  const bool on_a_face = std::any_of(faces.planes.begin(), faces.planes.end(), [&](const auto& f) {
-    return std::abs(f.signed_distance_m(p.x(), p.y(), p.z())) <= on_plane_m;
-  });
-  if (on_a_face) return false;
   return std::any_of(faces.extents.begin(), faces.extents.end(), [&](const FaceExtent& extent) {
     return extent.bounds && outside(extent, p, margin_m);
-  });
-}
-
-bool in_front_of_any(const FlatFaces& faces, const cv::Vec3f& point, double margin_m) {
-  return std::any_of(faces.planes.begin(), faces.planes.end(), [&](const FittedPlane& face) {
-    return face.signed_distance_m(point[0], point[1], point[2]) > margin_m;
   });
 }
 
@@ -188,11 +190,7 @@ std::int32_t claim_bodies_in_front(cv::Mat& objects, const cv::Mat& blobs, const
     if (!std::isfinite(point[i][2])) continue;
     const auto id = static_cast<std::size_t>(nearest[i]);
     if (id >= faces.size() || faces[id].empty()) continue;
-    if (in_front_of_any(faces[id], point[i], rule.margin_m) ||
-        (rule.beyond_margin_m > 0.0 && !faces[id].extents.empty() &&
-         beyond_any(faces[id], point[i], static_cast<float>(rule.on_plane_m),
-                    static_cast<float>(rule.beyond_margin_m +
-                                       rule.beyond_band_px * point[i][2] / fx_px)))) {
+    if (another_bodys(faces[id], point[i], rule, fx_px)) {
       state[i] = kInFront;
       any_in_front = true;
     } else {

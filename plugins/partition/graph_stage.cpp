@@ -428,7 +428,7 @@ void PartitionGraph::process(ProcessContext& ctx) {
   const std::size_t convex_count = edges_.size();
   const TouchingNodes touching = touching_nodes(graph_, neighbours_);
   if (rule_.coplanar) {
-    add_coplanar_edges(graph_, images, touching, rule_.coplanar_rule, edges_);
+    add_coplanar_edges(segments_, graph_, images, touching, rule_.coplanar_rule, edges_);
   }
   const std::size_t coplanar_count = edges_.size() - convex_count;
   if (rule_.curvature) {

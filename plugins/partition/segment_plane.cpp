@@ -47,9 +47,8 @@ Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t en
   return box;
 }
 
-double share_not_in_front(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
-                          std::int32_t end, double tolerance_m) {
-  if (end <= begin) return 1.0;
+std::int32_t count_in_front(const BlobSegments& points, const algo::Plane& plane,
+                            std::int32_t begin, std::int32_t end, double tolerance_m) {
   const float nx = plane.normal[0];
   const float ny = plane.normal[1];
   const float nz = plane.normal[2];
@@ -62,6 +61,20 @@ double share_not_in_front(const BlobSegments& points, const FittedPlane& plane, 
   for (std::int32_t k = begin; k < end; ++k) {
     in_front += static_cast<std::int32_t>(nx * x[k] + ny * y[k] + nz * z[k] + d0 > tol);
   }
+  return in_front;
+}
+
+std::int32_t count_behind(const BlobSegments& points, const algo::Plane& plane, std::int32_t begin,
+                          std::int32_t end, double tolerance_m) {
+  // Behind the plane is in front of it turned round (negating every term is exact).
+  const algo::Plane turned{-plane.normal, -plane.offset_m};
+  return count_in_front(points, turned, begin, end, tolerance_m);
+}
+
+double share_not_in_front(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
+                          std::int32_t end, double tolerance_m) {
+  if (end <= begin) return 1.0;
+  const std::int32_t in_front = count_in_front(points, plane, begin, end, tolerance_m);
   return 1.0 - static_cast<double>(in_front) / static_cast<double>(end - begin);
 }
 
@@ -79,6 +92,12 @@ double plane_rms_m(const BlobSegments& points, const FittedPlane& plane, std::in
 double normal_cosine(const FittedPlane& a, const FittedPlane& b) {
   return static_cast<double>(a.normal[0] * b.normal[0] + a.normal[1] * b.normal[1] +
                              a.normal[2] * b.normal[2]);
+}
+
+double centroid_offset_m(const FittedPlane& a, const FittedPlane& b) {
+  const float a_off_b = std::abs(b.signed_distance_m(a.centroid_m.data()));
+  const float b_off_a = std::abs(a.signed_distance_m(b.centroid_m.data()));
+  return static_cast<double>(std::max(a_off_b, b_off_a));
 }
 
 }  // namespace facet::partition

@@ -33,6 +33,13 @@ FittedPlane fit_plane(const BlobSegments& points, std::int32_t begin, std::int32
 
 Bounds bounds_of(const BlobSegments& points, std::int32_t begin, std::int32_t end);
 
+// Points of [begin, end) more than tolerance_m in front of `plane`, and more than tolerance_m
+// behind it.
+std::int32_t count_in_front(const BlobSegments& points, const algo::Plane& plane,
+                            std::int32_t begin, std::int32_t end, double tolerance_m);
+std::int32_t count_behind(const BlobSegments& points, const algo::Plane& plane, std::int32_t begin,
+                          std::int32_t end, double tolerance_m);
+
 // Share of the points [begin, end) that are not more than tolerance_m in front of `plane`
 // (1 for an empty range).
 double share_not_in_front(const BlobSegments& points, const FittedPlane& plane, std::int32_t begin,
@@ -44,5 +51,9 @@ double plane_rms_m(const BlobSegments& points, const FittedPlane& plane, std::in
 
 // Cosine of the angle between two planes' normals.
 double normal_cosine(const FittedPlane& a, const FittedPlane& b);
+
+// The larger of the two centroids' distances from the other's plane, metres: with the normals'
+// angle, how far two planes are from being one.
+double centroid_offset_m(const FittedPlane& a, const FittedPlane& b);
 
 }  // namespace facet::partition
