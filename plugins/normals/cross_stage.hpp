@@ -2,6 +2,7 @@
 // normals.cross: the paper's surface normals, from the cross product of neighbours at radius r.
 
 #include <opencv2/core/mat.hpp>
+#include <vector>
 
 #include "facet/stage.hpp"
 #include "normals/cross_kernel.hpp"
@@ -17,13 +18,19 @@ class CrossStage final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  void smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals);
+
   DepthSpace space_;
   CrossOptions options_;
   int smooth_radius_px_;
   NormalSmoother smoother_;
+  int auto_max_radius_px_;
+  double auto_min_gain_;
+  std::vector<NormalSmoother> auto_smoothers_;  // radius 1, 2, ... (renormalised)
   // Per-frame scratch kept between frames, so a stream allocates only the output images.
   cv::Mat z_;
   PixelGrid grid_;
+  cv::Mat smoothed_;
 };
 
 }  // namespace facet::normals
