@@ -120,6 +120,7 @@ CrossStage::CrossStage(const Params& params)
   }
   for (int radius_px = 1; radius_px <= auto_max_radius_px_; ++radius_px)
     auto_smoothers_.emplace_back(radius_px, true);
+  smoothed_.resize(auto_smoothers_.size());
 }
 
 void CrossStage::process(ProcessContext& ctx) {
@@ -140,38 +141,45 @@ void CrossStage::process(ProcessContext& ctx) {
   kNormals(ctx, NormalImage::make(input, std::move(normals)));
 }
 
-// The radius grows while one more makes at least auto_min_gain_ of the pairs agree. The shares
-// are measured at sampled pixels (noisy_pair_share). Averaging cannot settle more pairs than
-// disagree, so a share below the least gain ends the search without a look at averaged normals:
-// a frame that needs no smoothing costs one look at 1/16 of its normals.
+// The radius grows while one more makes at least auto_min_gain_ of the pairs agree. Each
+// radius tried is the box average the frame would get (NormalSmoother, vectorised), measured at
+// sampled pixels (noisy_pair_share); the one chosen is kept. Averaging cannot settle more pairs
+// than disagree, so a share below the least gain ends the search without averaging: a frame that
+// needs no smoothing costs one look at 1/16 of its normals.
 void CrossStage::smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals) {
   const NoisyPairRule rule;
-  const auto share_after = [&](double share, int radius_px) {
-    return share >= auto_min_gain_ ? noisy_pair_share(normals, rule, radius_px) : share;
-  };
   const double raw_share = noisy_pair_share(normals, rule);
   double share = raw_share;
   int radius_px = 0;
-  double next_share = share_after(share, 1);
-  while (share - next_share >= auto_min_gain_ && radius_px < auto_max_radius_px_) {
+  while (radius_px < auto_max_radius_px_ && share >= auto_min_gain_) {
+    const auto next = static_cast<std::size_t>(radius_px);
+    auto_smoothers_[next].apply(normals, smoothed_[next]);
+    const double next_share = noisy_pair_share(smoothed_[next], rule);
+    if (share - next_share < auto_min_gain_) break;
     ++radius_px;
     share = next_share;
-    next_share = share_after(share, radius_px + 1);
   }
-  if (radius_px > 0) {
-    auto_smoothers_[static_cast<std::size_t>(radius_px - 1)].apply(normals, smoothed_);
-    std::swap(normals, smoothed_);
-  }
-  if (share - next_share >= auto_min_gain_) {
-    ctx.warn("normals stay noisy after smoothing with radius " + std::to_string(radius_px) +
-             " (auto_smooth_max_radius): " + std::to_string(std::lround(100.0 * share)) +
-             " % of neighbouring normals differ by more than the edge angle, and a radius more "
-             "would settle " +
-             std::to_string(std::lround(100.0 * (share - next_share))) +
-             " % of them; expect few surface patches");
-  }
+  if (radius_px > 0) std::swap(normals, smoothed_[static_cast<std::size_t>(radius_px - 1)]);
+  if (radius_px == auto_max_radius_px_ && share >= auto_min_gain_)
+    warn_if_still_noisy(ctx, normals);
   ctx.metric("noisy_pair_share", raw_share);
   ctx.metric("smooth_radius_px", radius_px);
+}
+
+// Would a radius beyond the largest still settle auto_min_gain_ of the pairs? Only a warning
+// depends on it, so it is looked at on every 8th row and column, where the window of the radius
+// beyond costs most.
+void CrossStage::warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed) const {
+  NoisyPairRule coarse;
+  coarse.stride_px *= 2;
+  const double share = noisy_pair_share(smoothed, coarse);
+  const double gain = share - noisy_pair_share(smoothed, coarse, 1);
+  if (gain < auto_min_gain_) return;
+  ctx.warn("normals stay noisy after smoothing with radius " + std::to_string(auto_max_radius_px_) +
+           " (auto_smooth_max_radius): " + std::to_string(std::lround(100.0 * share)) +
+           " % of neighbouring normals differ by more than the edge angle, and more smoothing "
+           "would settle " +
+           std::to_string(std::lround(100.0 * gain)) + " % of them; expect few surface patches");
 }
 
 }  // namespace facet::normals

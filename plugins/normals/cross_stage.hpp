@@ -19,6 +19,7 @@ class CrossStage final : public Stage {
 
  private:
   void smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals);
+  void warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed) const;
 
   DepthSpace space_;
   CrossOptions options_;
@@ -30,7 +31,7 @@ class CrossStage final : public Stage {
   // Per-frame scratch kept between frames, so a stream allocates only the output images.
   cv::Mat z_;
   PixelGrid grid_;
-  cv::Mat smoothed_;
+  std::vector<cv::Mat> smoothed_;  // per radius of the ladder, kept between frames
 };
 
 }  // namespace facet::normals

@@ -107,7 +107,8 @@ bool same_normals(const cv::Mat& a, const cv::Mat& b) {
 
 // The radius grows while one more radius of averaging makes at least the least gain (0.125) of
 // the pairs agree: a quiet frame keeps its normals as they are, a noisy one is averaged with the
-// radius where that stops, or with the largest allowed (and a warning) when it does not stop.
+// radius where that stops, or with the largest allowed, with a warning when still more averaging
+// would gain.
 TEST(CrossAutoSmooth, SmoothsAsLittleAsSuffices) {
   constexpr double kMinGain = 0.125;
   const NoisyPairRule rule;
@@ -120,21 +121,39 @@ TEST(CrossAutoSmooth, SmoothsAsLittleAsSuffices) {
     ASSERT_LE(radius_px, 2);
     saw_radius[radius_px] = true;
     EXPECT_TRUE(same_normals(a.normals, run_fixed(depth, radius_px))) << sigma_mm;
-    const cv::Mat raw = run_fixed(depth, 0);
-    EXPECT_DOUBLE_EQ(a.share, noisy_pair_share(raw, rule));
-    for (int r = 0; r < radius_px; ++r) {
-      EXPECT_GE(noisy_pair_share(raw, rule, r) - noisy_pair_share(raw, rule, r + 1), kMinGain)
-          << sigma_mm << " mm, radius " << r;
-    }
-    const double gain_beyond =
-        noisy_pair_share(raw, rule, radius_px) - noisy_pair_share(raw, rule, radius_px + 1);
+    // The shares of the box averages the stage chooses from.
+    const auto share_of = [&](int r) { return noisy_pair_share(run_fixed(depth, r), rule); };
+    EXPECT_DOUBLE_EQ(a.share, share_of(0));
+    for (int r = 0; r < radius_px; ++r)
+      EXPECT_GE(share_of(r) - share_of(r + 1), kMinGain) << sigma_mm << " mm, radius " << r;
     if (radius_px < 2) {
-      EXPECT_LT(gain_beyond, kMinGain) << sigma_mm;
+      EXPECT_LT(share_of(radius_px) - share_of(radius_px + 1), kMinGain) << sigma_mm;
+      EXPECT_EQ(a.warnings, 0u) << sigma_mm;
+    } else {
+      // At the largest radius a warning says whether averaging the result once more would still
+      // settle the least gain (looked at on every 8th row and column).
+      NoisyPairRule coarse;
+      coarse.stride_px = 8;
+      const double gain_beyond =
+          noisy_pair_share(a.normals, coarse) - noisy_pair_share(a.normals, coarse, 1);
+      EXPECT_EQ(a.warnings, gain_beyond >= kMinGain ? 1u : 0u) << sigma_mm;
     }
-    EXPECT_EQ(a.warnings, gain_beyond >= kMinGain ? 1u : 0u) << sigma_mm;
   }
   // The noise levels cover the ladder: unsmoothed, and each radius.
   EXPECT_TRUE(saw_radius[0] && saw_radius[1] && saw_radius[2]);
+}
+
+// Noise that the largest radius allowed does not settle: the frame is averaged with it, and a
+// warning says that more would still gain.
+TEST(CrossAutoSmooth, WarnsWhenTheLargestRadiusIsNotEnough) {
+  const facet::DepthImage depth = noisy_plane(6.0, 2);
+  const AutoRun enough = run_auto(depth, 2);
+  EXPECT_EQ(enough.radius_px, 2.0);
+  EXPECT_EQ(enough.warnings, 0u);
+  const AutoRun capped = run_auto(depth, 1);
+  EXPECT_EQ(capped.radius_px, 1.0);
+  EXPECT_TRUE(same_normals(capped.normals, run_fixed(depth, 1)));
+  EXPECT_EQ(capped.warnings, 1u);
 }
 
 // The share measured of averaged normals is the share of what NormalSmoother makes (renormalised
