@@ -166,14 +166,16 @@ void CrossStage::smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals) {
   ctx.metric("smooth_radius_px", radius_px);
 }
 
-// Would a radius beyond the largest still settle auto_min_gain_ of the pairs? Only a warning
-// depends on it, so it is looked at on every 8th row and column, where the window of the radius
-// beyond costs most.
-void CrossStage::warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed) const {
+// Would averaging the result once more (radius 1) still settle auto_min_gain_ of the pairs? Only
+// a warning depends on it, so the shares are looked at on every 8th row and column. The average
+// goes to the scratch of radius 1: at the largest radius it holds no image still needed.
+void CrossStage::warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed) {
   NoisyPairRule coarse;
   coarse.stride_px *= 2;
+  cv::Mat& again = smoothed_.front();
+  auto_smoothers_.front().apply(smoothed, again);
   const double share = noisy_pair_share(smoothed, coarse);
-  const double gain = share - noisy_pair_share(smoothed, coarse, 1);
+  const double gain = share - noisy_pair_share(again, coarse);
   if (gain < auto_min_gain_) return;
   ctx.warn("normals stay noisy after smoothing with radius " + std::to_string(auto_max_radius_px_) +
            " (auto_smooth_max_radius): " + std::to_string(std::lround(100.0 * share)) +

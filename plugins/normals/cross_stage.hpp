@@ -19,7 +19,7 @@ class CrossStage final : public Stage {
 
  private:
   void smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals);
-  void warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed) const;
+  void warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed);
 
   DepthSpace space_;
   CrossOptions options_;

@@ -6,9 +6,9 @@
 // all over flat surfaces: patches shrink to nothing and the table is not found. The measure is
 // the share of pixel pairs, `step_px` apart along the rows and along the columns, whose normals
 // differ by more than `angle_deg`, taken of the normals as they are or box-averaged over a
-// radius. Creases and noise both make such pairs; averaging removes those of noise and keeps
-// those of creases, so what one more radius of averaging removes tells how noisy the normals are,
-// however many creases the scene has.
+// radius (NormalSmoother). Creases and noise both make such pairs; averaging removes those of noise
+// and keeps those of creases, so what one more radius of averaging removes tells how noisy the
+// normals are, however many creases the scene has.
 
 #include <opencv2/core/mat.hpp>
 
@@ -20,11 +20,9 @@ struct NoisyPairRule {
   int stride_px = 4;        // every n-th row and column is looked at: 1/16 of the pixels
 };
 
-// normals: CV_32FC3 (NaN = none). With smooth_radius_px R > 0 each normal of a pair is first
-// replaced by the mean of the valid normals of its (2R+1)² window, as NormalSmoother does (only
-// pixels that have a normal get one). Pairs with a missing normal do not count. Returns 0 for an
-// image without a valid pair.
-double noisy_pair_share(const cv::Mat& normals, const NoisyPairRule& rule,
-                        int smooth_radius_px = 0);
+// normals: CV_32FC3 (NaN = none; normals shorter than 1, as smoothing without renormalisation
+// leaves them, are fine). Pairs with a missing normal do not count. Returns 0 for an image
+// without a valid pair. The normals averaged over a radius are NormalSmoother's to make.
+double noisy_pair_share(const cv::Mat& normals, const NoisyPairRule& rule);
 
 }  // namespace facet::normals
