@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include "facet/algo/pixel_scale.hpp"
+
 namespace facet::algo {
 
 // Up to reference_depth_m the smallest region is min_px; beyond, a region at depth z needs the
@@ -16,6 +18,11 @@ struct RegionSizeRule {
   std::int64_t min_px = 100;
   double reference_depth_m = 0.0;  // 0: min_px at every depth
   std::int64_t far_min_px = 100;
+
+  // The rule for a frame whose pixel counts scale by `scale` (an image of another resolution).
+  RegionSizeRule scaled(const PixelScale& scale) const {
+    return {scale.count(min_px), reference_depth_m, scale.count(far_min_px)};
+  }
 
   bool depends_on_depth() const { return reference_depth_m > 0.0 && far_min_px < min_px; }
   // The fewest pixels any region can be kept with.
