@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "facet/algo/patch_contacts.hpp"
+#include "facet/algo/pixel_scale.hpp"
 #include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/images.hpp"
@@ -36,7 +37,7 @@ const Param<std::int64_t> kMinSize{
     "min_size_px",
     100,
     "Regions smaller than this go back to the unassigned pool (noise between edges). "
-    "A pixel count: it scales with the image area (x4 from 320x240 to 640x480).",
+    "A pixel count at reference_area_px: it scales with the image area.",
     {.unit = "px",
      .min = 1.0,
      .max = 1.0e7,
@@ -58,8 +59,8 @@ const Param<std::int64_t> kMinSizeFar{
     "min_size_far_px",
     50,
     "With min_size_reference_depth_m: the fewest pixels a far region is kept with, however far "
-    "(below it, disparity noise between edges makes regions too). A pixel count: it scales with "
-    "the image area.",
+    "(below it, disparity noise between edges makes regions too). A pixel count at "
+    "reference_area_px: it scales with the image area.",
     {.unit = "px",
      .min = 1.0,
      .max = 1.0e7,
@@ -113,13 +114,14 @@ StageSpec GrowSurfaces::spec() {
   return spec
       .declare(kEdges, kPoints, kPatches, kAdjacency, kConnectivity, kMinSize,
                kMinSizeReferenceDepth, kMinSizeFar, kAssignRadius, kAssignMaxDistance,
-               kMaxUnassignedRatio)
+               kMaxUnassignedRatio, algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
 GrowSurfaces::GrowSurfaces(const Params& params)
     : connectivity_(kConnectivity(params)),
       region_size_{kMinSize(params), kMinSizeReferenceDepth(params), kMinSizeFar(params)},
+      reference_area_px_(algo::kReferenceAreaParam(params)),
       max_unassigned_ratio_(kMaxUnassignedRatio(params)),
       assignment_(AssignmentRule{kAssignRadius(params), kAssignMaxDistance(params)}) {}
 
@@ -133,7 +135,8 @@ void GrowSurfaces::process(ProcessContext& ctx) {
   // Surface = not an edge and a valid 3D point, so a patch never holds a pixel without a point,
   // whatever produced the edge mask.
   const cv::Mat classes = classify_pixels(edges.mask, xyz);
-  SurfaceRegions regions = regions_.label(classes, xyz, connectivity_, region_size_);
+  const algo::PixelScale scale(reference_area_px_, xyz.size());
+  SurfaceRegions regions = regions_.label(classes, xyz, connectivity_, region_size_.scaled(scale));
   const AssignmentResult assigned = assignment_.assign(regions.labels, classes, xyz);
 
   LabelImage patches = LabelImage::make(points, std::move(regions.labels), regions.count);

@@ -19,6 +19,7 @@ class GrowSurfaces final : public Stage {
  private:
   int connectivity_;
   algo::RegionSizeRule region_size_;
+  std::int64_t reference_area_px_;  // pixel counts are given for this image area
   double max_unassigned_ratio_;
   // Both keep their buffers from frame to frame.
   SurfaceRegionLabeler regions_;

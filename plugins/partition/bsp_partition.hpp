@@ -37,6 +37,10 @@ class BspPartitioner {
  public:
   explicit BspPartitioner(BspRule rule) : rule_(rule) {}
 
+  const BspRule& rule() const { return rule_; }
+  // For a frame of another resolution (its pixel counts scaled).
+  void set_rule(const BspRule& rule) { rule_ = rule; }
+
   // Partitions `blob`; writes part ids next_id, next_id + 1, ... to labels[pixel] of its points
   // and returns the number of parts. Reorders points within the blob's range.
   std::int32_t partition(BlobSegments& points, const BlobRange& blob, std::int32_t* labels,

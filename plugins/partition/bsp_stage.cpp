@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "facet/algo/pixel_scale.hpp"
 #include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
@@ -24,13 +25,14 @@ const Param<int> kMinSplitPx{
     "min_split_px",
     80,
     "N_split: a split needs this many points on each side (tolerates outliers of the "
-    "plane fit). A pixel count: it scales with the image area.",
+    "plane fit). A pixel count at reference_area_px: it scales with the image area.",
     {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "paper: 20 at 320x240, x4 for 640x480"}};
 const Param<int> kMinFacePx{
     "min_face_px",
     120,
     "N_f: least points of a patch to serve as a face, and least face points of a blob "
-    "to be partitioned at all. A pixel count: it scales with the image area.",
+    "to be partitioned at all. A pixel count at reference_area_px: it scales with the image "
+    "area.",
     {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "paper: 30 at 320x240, x4 for 640x480"}};
 const Param<double> kMinFaceRatio{
     "min_face_ratio",
@@ -76,20 +78,27 @@ StageSpec PartitionBsp::spec() {
              "object of the nearest pixel of their blob. Object ids follow the raster order of "
              "each object's first pixel.")
       .declare(kBlobs, kPatches, kAdjacency, kPoints, kObjects, kToleranceM, kMinSplitPx,
-               kMinFacePx, kMinFaceRatio, kKeepPatches, kPlaneOwner, kMaxSplits)
+               kMinFacePx, kMinFaceRatio, kKeepPatches, kPlaneOwner, kMaxSplits,
+               algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
 PartitionBsp::PartitionBsp(const Params& params)
-    : partitioner_(BspRule{kToleranceM(params), kMinSplitPx(params), kMinFacePx(params),
-                           kMinFaceRatio(params), kKeepPatches(params), kMaxSplits(params),
-                           kPlaneOwner(params)}) {}
+    : rule_{kToleranceM(params),  kMinSplitPx(params), kMinFacePx(params), kMinFaceRatio(params),
+            kKeepPatches(params), kMaxSplits(params),  kPlaneOwner(params)},
+      reference_area_px_(algo::kReferenceAreaParam(params)),
+      partitioner_(rule_) {}
 
 void PartitionBsp::process(ProcessContext& ctx) {
   const auto& blobs = kBlobs(ctx);
   const auto& patches = kPatches(ctx);
   const auto& points = kPoints(ctx);
   check_partition_inputs(blobs.labels, patches.labels, points.points);
+  const algo::PixelScale scale(reference_area_px_, blobs.labels.size());
+  BspRule rule = rule_;
+  rule.min_split_px = static_cast<std::int32_t>(scale.count(rule_.min_split_px));
+  rule.min_face_px = static_cast<std::int32_t>(scale.count(rule_.min_face_px, 3));
+  partitioner_.set_rule(rule);
   segments_.build(blobs.labels, patches.labels, points.points);
   cv::Mat objects = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);
   auto* labels = objects.ptr<std::int32_t>();

@@ -14,6 +14,8 @@ class PartitionBsp final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  BspRule rule_;                    // pixel counts at reference_area_px_
+  std::int64_t reference_area_px_;  // facet/algo/pixel_scale.hpp
   BspPartitioner partitioner_;
   BlobSegments segments_;  // keeps its buffers from frame to frame
 };

@@ -44,6 +44,10 @@ class ConvexMerger {
  public:
   explicit ConvexMerger(ConvexRule rule) : rule_(rule) {}
 
+  const ConvexRule& rule() const { return rule_; }
+  // For a frame of another resolution (its pixel counts scaled).
+  void set_rule(const ConvexRule& rule) { rule_ = rule; }
+
   // Groups the patches of `blob` and writes group ids next_id, next_id + 1, ... to labels[pixel]
   // of their points; leftover points stay 0. Returns the number of groups.
   std::int32_t merge(const BlobSegments& points, const BlobRange& blob,

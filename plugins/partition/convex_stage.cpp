@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "facet/algo/pixel_scale.hpp"
 #include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
@@ -33,7 +34,7 @@ const Param<int> kMinPatchPx{
     "min_patch_px",
     100,
     "Smaller patches have no reliable plane; they join an object as leftover pixels. "
-    "A pixel count: it scales with the image area.",
+    "A pixel count at reference_area_px: it scales with the image area.",
     {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"}};
 
 }  // namespace
@@ -53,13 +54,15 @@ StageSpec PartitionConvex::spec() {
              "with no patch is one object. Object ids follow the raster order of each object's "
              "first pixel.")
       .declare(kBlobs, kPatches, kAdjacency, kPoints, kObjects, kToleranceM, kMinBehindShare,
-               kMinAngleDeg, kMinPatchPx)
+               kMinAngleDeg, kMinPatchPx, algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
 PartitionConvex::PartitionConvex(const Params& params)
-    : merger_(ConvexRule{kToleranceM(params), kMinBehindShare(params), kMinAngleDeg(params),
-                         kMinPatchPx(params)}) {}
+    : rule_{kToleranceM(params), kMinBehindShare(params), kMinAngleDeg(params),
+            kMinPatchPx(params)},
+      reference_area_px_(algo::kReferenceAreaParam(params)),
+      merger_(rule_) {}
 
 void PartitionConvex::process(ProcessContext& ctx) {
   const auto& blobs = kBlobs(ctx);
@@ -67,6 +70,10 @@ void PartitionConvex::process(ProcessContext& ctx) {
   const auto& adjacency = kAdjacency(ctx);
   const auto& points = kPoints(ctx);
   check_partition_inputs(blobs.labels, patches.labels, points.points);
+  ConvexRule rule = rule_;
+  rule.min_patch_px = static_cast<std::int32_t>(
+      algo::PixelScale(reference_area_px_, blobs.labels.size()).count(rule_.min_patch_px, 3));
+  merger_.set_rule(rule);
   segments_.build(blobs.labels, patches.labels, points.points);
   neighbours_.build(adjacency, segments_.max_patch);
   cv::Mat objects = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);

@@ -15,6 +15,8 @@ class PartitionConvex final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  ConvexRule rule_;                 // min_patch_px at reference_area_px_
+  std::int64_t reference_area_px_;  // facet/algo/pixel_scale.hpp
   ConvexMerger merger_;
   BlobSegments segments_;  // keeps its buffers from frame to frame
   PatchNeighbours neighbours_;

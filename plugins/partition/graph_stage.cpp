@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "facet/algo/pixel_scale.hpp"
 #include "facet/contract.hpp"
 #include "facet/types/images.hpp"
 #include "facet/types/patches.hpp"
@@ -21,7 +22,7 @@ const Param<int> kMinPatchPx{
     "min_patch_px",
     100,
     "Smaller patches have no reliable plane; they join an object as leftover pixels. "
-    "A pixel count: it scales with the image area.",
+    "A pixel count at reference_area_px: it scales with the image area.",
     {.unit = "px", .min = 3.0, .max = 1.0e7, .origin = "grow.surfaces' min_size_px"}};
 const Param<double> kPlanarMaxRmsM{
     "planar_max_rms_m",
@@ -235,7 +236,8 @@ const Param<double> kUnclaimedCoreRadiusPx{
     "with no patch of its own (a box on a box, a cup on a tray, a can behind a box, far "
     "from the camera) does. A core whose points lie mostly within convex_tolerance_m of "
     "the plane of a planar patch beside it is the rest of that face and stays with it. "
-    "0 = off: every unclaimed pixel joins the nearest object of its blob.",
+    "0 = off: every unclaimed pixel joins the nearest object of its blob. A width at "
+    "reference_area_px: it scales with the square root of the image area.",
     {.unit = "px",
      .min = 0.0,
      .max = 1000.0,
@@ -243,7 +245,8 @@ const Param<double> kUnclaimedCoreRadiusPx{
 const Param<int> kUnclaimedCoreMinPx{
     "unclaimed_core_min_px",
     20,
-    "Smallest core (pixels) that becomes an object.",
+    "Smallest core (pixels) that becomes an object. A pixel count at reference_area_px: it "
+    "scales with the image area.",
     {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "20-40 alike on generated sets"}};
 const Param<double> kUnclaimedCoreRadiusM{
     "unclaimed_core_radius_m",
@@ -277,7 +280,7 @@ const Param<int> kFrontBodyMinPx{
     "front_body_min_px",
     30,
     "Smallest body in front of a face (pixels) that becomes an object; smaller ones are "
-    "left-over pixels.",
+    "left-over pixels. A pixel count at reference_area_px: it scales with the image area.",
     {.unit = "px", .min = 1.0, .max = 1.0e7, .origin = "20-45 alike on generated sets"}};
 const Param<double> kFrontBodyFaceRmsAt1mM{
     "front_body_face_rms_at_1m_m",
@@ -377,11 +380,13 @@ StageSpec PartitionGraph::spec() {
                kFloorMinWrapDeg, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
                kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM,
                kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM, kFrontBodyKeepEnclosing,
-               kFrontBodyBeyondMarginM, kFrontBodyBeyondBandPx, kEmitGraph)
+               kFrontBodyBeyondMarginM, kFrontBodyBeyondBandPx, kEmitGraph,
+               algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
-PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(kEmitGraph(params)) {
+PartitionGraph::PartitionGraph(const Params& params)
+    : emit_graph_(kEmitGraph(params)), reference_area_px_(algo::kReferenceAreaParam(params)) {
   core_rule_ = {kUnclaimedCoreRadiusPx(params), kUnclaimedCoreRadiusM(params),
                 kUnclaimedCoreMinPx(params), kConvexToleranceM(params)};
   front_rule_ = {kFrontBodyMarginM(params),       kFrontBodyMinPx(params),
@@ -408,6 +413,19 @@ PartitionGraph::PartitionGraph(const Params& params) : emit_graph_(kEmitGraph(pa
   rule_.cut = {kCut(params), kMaxCutCost(params), kMaxCutNodes(params), kCutNeedsCycles(params)};
 }
 
+// The rules in pixels, scaled to the frame's resolution; the edge bands (front_body_beyond_band_px)
+// and the gap evidence (coplanar_min_gap_px) are properties of the image and stay as given.
+PartitionGraph::FrameRules PartitionGraph::rules_for(cv::Size image) const {
+  const algo::PixelScale scale(reference_area_px_, image);
+  FrameRules rules{rule_.nodes, rule_.convex_rule, core_rule_, front_rule_};
+  rules.nodes.min_patch_px = static_cast<std::int32_t>(scale.count(rule_.nodes.min_patch_px, 3));
+  rules.convex.min_patch_px = rules.nodes.min_patch_px;
+  rules.core.radius_px = scale.length(core_rule_.radius_px);
+  rules.core.min_px = static_cast<std::int32_t>(scale.count(core_rule_.min_px));
+  rules.front.min_px = static_cast<std::int32_t>(scale.count(front_rule_.min_px));
+  return rules;
+}
+
 void PartitionGraph::process(ProcessContext& ctx) {
   const auto& blobs = kBlobs(ctx);
   const auto& patches = kPatches(ctx);
@@ -415,15 +433,16 @@ void PartitionGraph::process(ProcessContext& ctx) {
   const auto& points = kPoints(ctx);
   graph_.nodes.clear();
   check_partition_inputs(blobs.labels, patches.labels, points.points);
+  const FrameRules rules = rules_for(blobs.labels.size());
   // The gap lines read the images as flat arrays, which packet images are (facet/types/images.hpp).
   const FrameImages images{&patches.labels, &points.points, &blobs.labels};
   segments_.build(blobs.labels, patches.labels, points.points);
   neighbours_.build(adjacency, segments_.max_patch);
-  graph_.build(segments_, blobs.labels.cols, rule_.nodes);
+  graph_.build(segments_, blobs.labels.cols, rules.nodes);
 
   edges_.clear();
   if (rule_.convex) {
-    add_convex_edges(segments_, graph_, neighbours_, rule_.convex_rule, node_of_patch_, edges_);
+    add_convex_edges(segments_, graph_, neighbours_, rules.convex, node_of_patch_, edges_);
   }
   const std::size_t convex_count = edges_.size();
   const TouchingNodes touching = touching_nodes(graph_, neighbours_);
@@ -447,7 +466,7 @@ void PartitionGraph::process(ProcessContext& ctx) {
   auto* labels = objects.ptr<std::int32_t>();
   // The cores need each claimed pixel's node and the planar nodes' planes (a core that continues
   // one of those faces is that face).
-  const bool cores = core_rule_.radius_px > 0.0;
+  const bool cores = rules.core.radius_px > 0.0;
   std::int32_t* node_of = nullptr;
   if (cores) {
     node_of_pixel_.create(blobs.labels.size(), CV_32SC1);
@@ -471,13 +490,13 @@ void PartitionGraph::process(ProcessContext& ctx) {
   }
   if (cores) {
     next_id = claim_unclaimed_cores(objects, blobs.labels, points.points, points.camera.fx,
-                                    ClaimedFaces{&node_of_pixel_, &face_planes_}, core_rule_,
+                                    ClaimedFaces{&node_of_pixel_, &face_planes_}, rules.core,
                                     core_buffers_, next_id);
   }
-  if (front_rule_.margin_m > 0.0) {
-    flat_faces_of_objects(graph_, segments_, group, next_id, front_rule_, faces_of_object_);
+  if (rules.front.margin_m > 0.0) {
+    flat_faces_of_objects(graph_, segments_, group, next_id, rules.front, faces_of_object_);
     next_id = claim_bodies_in_front(objects, blobs.labels, points.points, faces_of_object_,
-                                    front_rule_, points.camera.fx, front_buffers_, next_id);
+                                    rules.front, points.camera.fx, front_buffers_, next_id);
     fill_blob_gaps(objects, blobs.labels, next_id, front_buffers_.gaps);
   } else {
     fill_blob_gaps(objects, blobs.labels, next_id);

@@ -37,8 +37,18 @@ class PartitionGraph final : public Stage {
   void process(ProcessContext& ctx) override;
 
  private:
+  // The rules whose pixel counts and widths scale with the image (facet/algo/pixel_scale.hpp).
+  struct FrameRules {
+    NodeRule nodes;
+    ConvexRule convex;
+    CoreRule core;
+    FrontBodyRule front;
+  };
+  FrameRules rules_for(cv::Size image) const;
+
   GraphRule rule_;
   bool emit_graph_;
+  std::int64_t reference_area_px_;  // pixel counts and widths are given for this image area
   CoreRule core_rule_;
   cv::Mat node_of_pixel_;
   std::vector<FittedPlane> face_planes_;

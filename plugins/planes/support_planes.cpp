@@ -11,6 +11,7 @@
 
 #include "facet/algo/label_runs.hpp"
 #include "facet/algo/patch_contacts.hpp"
+#include "facet/algo/pixel_scale.hpp"
 #include "facet/contract.hpp"
 #include "facet/image_checks.hpp"
 #include "facet/types/geometry.hpp"
@@ -65,8 +66,8 @@ const Param<std::int64_t> kCandidateMinSize{
     2500,
     "N_bg: patches with at least this many valid points are plane candidates. Low "
     "enough for wall and floor fragments at the edge of the view; box faces among "
-    "the candidates are rejected by the support test, not by size. A pixel count: "
-    "scale it with the image area (x1/4 at 320x240).",
+    "the candidates are rejected by the support test, not by size. A pixel count at "
+    "reference_area_px: it scales with the image area.",
     {.unit = "px",
      .min = 3.0,
      .max = 1.0e8,
@@ -213,7 +214,8 @@ const Param<double> kUpPriorMaxAngle{
 const Param<std::int64_t> kMinSegmentSize{
     "min_segment_px",
     20,
-    "N_seg: patches left with fewer points than this are dropped (set to 0).",
+    "N_seg: patches left with fewer points than this are dropped (set to 0). A pixel count at "
+    "reference_area_px: it scales with the image area.",
     {.unit = "px", .min = 0.0, .max = 1.0e6, .origin = "paper: N_seg = 5 at 320x240, x4"}};
 const Param<double> kSplitMaxDistance{
     "split_max_distance_m",
@@ -273,8 +275,8 @@ const Param<double> kFlatObjectMinStep{
 const Param<std::int64_t> kFlatObjectMinSize{
     "flat_object_min_px",
     300,
-    "Raised regions with fewer table pixels stay with the table. A pixel count: scale it "
-    "with the image area.",
+    "Raised regions with fewer table pixels stay with the table. A pixel count at "
+    "reference_area_px: it scales with the image area.",
     {.unit = "px",
      .min = 1.0,
      .max = 1.0e8,
@@ -285,7 +287,8 @@ const Param<double> kFlatObjectMinWidth{
     "Raised regions narrower than this (twice the largest distance of a point from the "
     "region's border, small holes closed) stay with the table: the strips along the feet of "
     "objects, where their sides' bottom bands and the table around them average above "
-    "min_object_height_m.",
+    "min_object_height_m. A width at reference_area_px: it scales with the square root of the "
+    "image area.",
     {.unit = "px",
      .min = 0.0,
      .max = 1000.0,
@@ -419,7 +422,7 @@ StageSpec SupportPlaneStage::spec() {
                kMinObjectHeight, kMaxObjectHeight, kMinTableFraction, kHorizontalMaxAngle, kUp,
                kUpPriorMaxAngle, kMinSegmentSize, kSplitMaxDistance, kSplitGrowthStart,
                kPlanesPerPatch, kFlatObjectWindow, kFlatObjectMinStep, kFlatObjectMinSize,
-               kFlatObjectMinWidth, kFlatObjectMaxHeight, kSeed)
+               kFlatObjectMinWidth, kFlatObjectMaxHeight, kSeed, algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
@@ -428,6 +431,7 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
       up_prior_max_deg_(kUpPriorMaxAngle(params)),
       up_(kUp(params).direction),
       min_segment_px_(kMinSegmentSize(params)),
+      reference_area_px_(algo::kReferenceAreaParam(params)),
       split_gate_(static_cast<float>(kSplitMaxDistance(params)),
                   static_cast<float>(kSplitGrowthStart(params))),
       seed_(static_cast<std::uint32_t>(kSeed(params))) {
@@ -472,11 +476,20 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const cv::Mat& labels = patches.labels;
   const cv::Mat& xyz = points.points;
 
+  // The rules in pixels, for this frame's resolution.
+  const algo::PixelScale scale(reference_area_px_, xyz.size());
+  CandidateRule candidate_rule = candidate_rule_;
+  candidate_rule.min_px = scale.count(candidate_rule_.min_px, 3);
+  FlatObjectRule flat_object_rule = flat_object_rule_;
+  flat_object_rule.min_px = scale.count(flat_object_rule_.min_px);
+  flat_object_rule.min_width_px = scale.length(flat_object_rule_.min_width_px);
+  const std::int64_t min_segment_px = scale.count(min_segment_px_, 0);
+
   // Candidates and their planes; the generator restarts every frame, so a frame's result does
   // not depend on the frames before it (and clones agree).
   std::mt19937 rng(seed_);
   const std::vector<CandidatePlane> candidates =
-      find_candidate_planes(labels, xyz, patches.count, candidate_rule_, fit_rule_, rng);
+      find_candidate_planes(labels, xyz, patches.count, candidate_rule, fit_rule_, rng);
   std::vector<algo::Plane> models;
   std::vector<std::int64_t> sizes;
   std::vector<Eigen::Vector3f> centroids;
@@ -509,13 +522,13 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   const PlaneAssignment assignment =
       assign_to_planes(labels, patches.count, xyz, accepted.models, accepted.roles, accepted.table,
                        assignment_rule_, plane_labels, remaining_labels);
-  std::int32_t remaining_count =
-      split_and_drop_left_patches(remaining_labels, patches.count, assignment, xyz, cut_pieces_);
+  std::int32_t remaining_count = split_and_drop_left_patches(
+      remaining_labels, patches.count, assignment, xyz, min_segment_px, cut_pieces_);
   std::int64_t flat_object_px = 0;
   if (accepted.table >= 0) {
     remaining_count = give_flat_objects_back(
         plane_labels, accepted.table + 1, remaining_labels, remaining_count, cut_pieces_, xyz,
-        accepted.models[static_cast<std::size_t>(accepted.table)], flat_object_rule_,
+        accepted.models[static_cast<std::size_t>(accepted.table)], flat_object_rule,
         flat_object_buffers_, flat_object_px);
   }
 
@@ -566,11 +579,9 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
 // patch run onto object tops through gaps in the edges): one patch each. Then the segments too
 // small to matter go; slot 0 (no patch) is never kept. Returns the new patch count;
 // `cut_pieces` marks the ids that are pieces of a patch a plane cut (for the flat-object rule).
-std::int32_t SupportPlaneStage::split_and_drop_left_patches(cv::Mat& left_labels,
-                                                            std::int32_t patch_count,
-                                                            const PlaneAssignment& assignment,
-                                                            const cv::Mat& xyz,
-                                                            std::vector<char>& cut_pieces) {
+std::int32_t SupportPlaneStage::split_and_drop_left_patches(
+    cv::Mat& left_labels, std::int32_t patch_count, const PlaneAssignment& assignment,
+    const cv::Mat& xyz, std::int64_t min_segment_px, std::vector<char>& cut_pieces) {
   auto* left = left_labels.ptr<std::int32_t>();
   const std::size_t total = left_labels.total();
   const std::size_t patch_slots = assignment.patch_px.size();
@@ -595,7 +606,7 @@ std::int32_t SupportPlaneStage::split_and_drop_left_patches(cv::Mat& left_labels
   bool small_segments = false;
   for (std::size_t slot = 1; slot < left_slots; ++slot) {
     const std::int64_t size = left_px[slot];
-    too_small[slot] = size > 0 && size < min_segment_px_;
+    too_small[slot] = size > 0 && size < min_segment_px;
     small_segments = small_segments || too_small[slot] != 0;
   }
   if (small_segments) {

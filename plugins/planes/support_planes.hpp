@@ -28,6 +28,7 @@ class SupportPlaneStage final : public Stage {
  private:
   std::int32_t split_and_drop_left_patches(cv::Mat& left_labels, std::int32_t patch_count,
                                            const PlaneAssignment& assignment, const cv::Mat& xyz,
+                                           std::int64_t min_segment_px,
                                            std::vector<char>& cut_pieces);
 
   // The four kernels: candidate planes, the table (scene model), the support decision, and the
@@ -44,6 +45,8 @@ class SupportPlaneStage final : public Stage {
   double up_prior_max_deg_;
   std::optional<Eigen::Vector3f> up_;  // nothing = auto
   std::int64_t min_segment_px_;
+  // The pixel counts and widths above are given for this image area (facet/algo/pixel_scale.hpp).
+  std::int64_t reference_area_px_;
   algo::NeighbourGate split_gate_;
   algo::LabelPieces pieces_;  // its buffers are kept from frame to frame
   std::uint32_t seed_;

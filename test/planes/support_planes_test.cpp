@@ -604,28 +604,42 @@ TEST(SupportPlanes, ASlowRiseOrANarrowStripOfTheTableStaysTable) {
   EXPECT_LT(wide_px, 59 * 39 * 12 / 10);
 }
 
+// A W x H frame of one plane at depth_m with a square patch of side_px at (8, 8): the number of
+// blobs grow.blobs keeps of it.
+int square_blob_count(cv::Size size, int side_px, float depth_m, Overrides params) {
+  PointImage points;
+  points.points = cv::Mat(size, CV_32FC3);
+  for (int y = 0; y < size.height; ++y)
+    for (int x = 0; x < size.width; ++x)
+      points.points.at<cv::Vec3f>(y, x) =
+          cv::Vec3f(0.002F * static_cast<float>(x), 0.002F * static_cast<float>(y), depth_m);
+  LabelImage patches;
+  patches.labels = cv::Mat(size, CV_32SC1, cv::Scalar(0));
+  patches.labels(cv::Rect(8, 8, side_px, side_px)).setTo(1);
+  patches.count = 1;
+  return run_blobs(patches, points, nullptr, params).count;
+}
+
 // grow.blobs' min_size_reference_depth_m through the stage: a 12 x 12 patch (144 px) under
 // min_size_px 200 on a plane 2 m away is kept with the tabletop graph's rule (1 m, floor 100 px)
-// and removed without it, or when it lies 1 m away.
+// and removed without it, or when it lies 1 m away. The 30 x 30 frame takes the counts as given.
 TEST(GrowBlobs, AFarSmallObjectIsKeptByTheAreaItCovers) {
-  const auto blob_count = [](float depth_m, const Overrides& params) {
-    PointImage points;
-    points.points = cv::Mat(30, 30, CV_32FC3);
-    for (int y = 0; y < 30; ++y)
-      for (int x = 0; x < 30; ++x)
-        points.points.at<cv::Vec3f>(y, x) =
-            cv::Vec3f(0.002F * static_cast<float>(x), 0.002F * static_cast<float>(y), depth_m);
-    LabelImage patches;
-    patches.labels = cv::Mat(30, 30, CV_32SC1, cv::Scalar(0));
-    patches.labels(cv::Rect(8, 8, 12, 12)).setTo(1);
-    patches.count = 1;
-    return run_blobs(patches, points, nullptr, params).count;
-  };
+  const cv::Size size(30, 30);
   const Overrides by_area{{"min_size_reference_depth_m", 1.0},
-                          {"min_size_far_px", std::int64_t{100}}};
-  EXPECT_EQ(blob_count(2.0F, by_area), 1);
-  EXPECT_EQ(blob_count(1.0F, by_area), 0);
-  EXPECT_EQ(blob_count(2.0F, {}), 0);
+                          {"min_size_far_px", std::int64_t{100}},
+                          {"reference_area_px", std::int64_t{0}}};
+  EXPECT_EQ(square_blob_count(size, 12, 2.0F, by_area), 1);
+  EXPECT_EQ(square_blob_count(size, 12, 1.0F, by_area), 0);
+  EXPECT_EQ(square_blob_count(size, 12, 2.0F, {{"reference_area_px", std::int64_t{0}}}), 0);
+}
+
+// min_size_px 200 is given for 640 x 480: a 15 x 15 blob (225 px) is kept there, removed at
+// 1280 x 960 (800 px) and at 320 x 240 a 10 x 10 blob (100 px, against 50) is kept.
+TEST(GrowBlobs, SizesScaleWithTheImageArea) {
+  EXPECT_EQ(square_blob_count({640, 480}, 15, 1.0F, {}), 1);
+  EXPECT_EQ(square_blob_count({1280, 960}, 15, 1.0F, {}), 0);
+  EXPECT_EQ(square_blob_count({320, 240}, 10, 1.0F, {}), 1);
+  EXPECT_EQ(square_blob_count({320, 240}, 10, 1.0F, {{"reference_area_px", std::int64_t{0}}}), 0);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 // The whole tabletop graph (graphs/tabletop.yaml) on bad input: a frame with no table, empty
 // frames, frames with no valid depth, one huge blob, 200 tiny objects, a table seen edge-on, a
-// wall only, noise. Each run must complete, write a consistent result for every frame, give a
-// sensible object count and, where it helps a user, say what was wrong.
-// What the pipeline does on each of these is documented in README.md ("Bad input").
+// wall only, noise, a camera of another resolution. Each run must complete, write a consistent
+// result for every frame, give a sensible object count and, where it helps a user, say what was
+// wrong. What the pipeline does on each of these is documented in README.md ("Bad input").
 
 #include <gtest/gtest.h>
 
@@ -352,6 +352,34 @@ TEST(TabletopBadInput, NoisierThanAKinect) {
   // Unsmoothed, 6 mm already costs a box and leaves fragments; at 8 mm nothing is found.
   EXPECT_LT(objects_found_alone(scene.object, 4, unsmoothed.frame("sigma6").labels), 3);
   EXPECT_EQ(unsmoothed.frame("sigma8").objects(), 0u) << unsmoothed.frame("sigma8").json;
+}
+
+// A camera at 320 x 240 (a Kinect's QVGA mode): the same scene in a quarter of the pixels. The
+// pixel counts of the shipped graph are given for 640 x 480 and scale with the image
+// (reference_area_px), so three 3.5 cm cubes beside a large box are found there as at 640 x 480;
+// taken as given, the counts ask each face and blob for four times the surface, and cubes are
+// lost.
+TEST(TabletopBadInput, AQuarterVgaCameraFindsTheSmallObjectsToo) {
+  const CameraIntrinsics qvga{262.5, 262.5, 159.5, 119.5, 320, 240};
+  SceneBuilder builder(qvga);
+  builder.plane(kTable.table_point, kTable.up);
+  kTable.box_on_table(builder, -0.25, 0.05, {0.10, 0.08, 0.12});
+  kTable.box_on_table(builder, -0.05, 0.12, {0.0175, 0.0175, 0.0175});
+  kTable.box_on_table(builder, 0.10, -0.02, {0.0175, 0.0175, 0.0175});
+  kTable.box_on_table(builder, 0.25, 0.10, {0.0175, 0.0175, 0.0175});
+  const RenderedScene scene = builder.render();
+  Dataset data(qvga);
+  data.add("qvga", depth_mm(scene));
+  const TabletopRun scaled = run_tabletop(data);
+  expect_run_completed(scaled, data);
+  EXPECT_EQ(objects_found_alone(scene.object, 5, scaled.frame("qvga").labels), 4);
+  EXPECT_EQ(scaled.frame("qvga").objects(), 4u) << scaled.frame("qvga").json;
+  const TabletopRun as_given = run_tabletop(data, {{"patches.reference_area_px", "0"},
+                                                   {"planes.reference_area_px", "0"},
+                                                   {"blobs.reference_area_px", "0"},
+                                                   {"objects.reference_area_px", "0"}});
+  expect_run_completed(as_given, data);
+  EXPECT_LT(objects_found_alone(scene.object, 5, as_given.frame("qvga").labels), 4);
 }
 
 }  // namespace

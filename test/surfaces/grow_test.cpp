@@ -22,6 +22,10 @@ namespace {
 
 const std::filesystem::path kMosd = std::filesystem::path(FACET_TEST_DATA_DIR) / "mosd";
 
+// The hand-made inputs are a few dozen pixels across; tests of the pixel counts themselves take
+// them as given instead of scaled to a 640 x 480 image (facet/algo/pixel_scale.hpp).
+constexpr std::pair<const char*, std::int64_t> kCountsAsGiven{"reference_area_px", 0};
+
 // A fronto-parallel plane at depth_m (1 m unless given), 2 mm between pixels, every pixel
 // surface.
 struct FlatInput {
@@ -132,10 +136,11 @@ TEST(GrowSurfaces, ConnectivityDecidesWhetherADiagonalLineSeparates) {
 TEST(GrowSurfaces, SmallRegionsReturnToThePoolAndJoinTheirNeighbour) {
   FlatInput input = flat_input(60, 60);
   cv::rectangle(input.edges.mask, cv::Rect(20, 20, 6, 6), cv::Scalar(255));  // 4x4 inside
-  const GrowResult dropped = run_grow(input.edges, input.points);
+  const GrowResult dropped = run_grow(input.edges, input.points, {kCountsAsGiven});
   EXPECT_EQ(dropped.patches.count, 1);
   EXPECT_EQ(cv::countNonZero(dropped.patches.labels != 1), 0);
-  const GrowResult kept = run_grow(input.edges, input.points, {{"min_size_px", std::int64_t{16}}});
+  const GrowResult kept =
+      run_grow(input.edges, input.points, {{"min_size_px", std::int64_t{16}}, kCountsAsGiven});
   EXPECT_EQ(kept.patches.count, 2);
   EXPECT_EQ(kept.patches.labels.at<std::int32_t>(22, 22), 2);
 }
@@ -145,8 +150,9 @@ TEST(GrowSurfaces, SmallRegionsReturnToThePoolAndJoinTheirNeighbour) {
 TEST(GrowSurfaces, FarRegionsAreKeptWithTheAreaNearOnesNeed) {
   const Overrides by_area{{"min_size_reference_depth_m", 1.0},
                           {"min_size_far_px", std::int64_t{50}},
-                          {"assign_radius_px", std::int64_t{0}}};
-  const Overrides fixed{{"assign_radius_px", std::int64_t{0}}};
+                          {"assign_radius_px", std::int64_t{0}},
+                          kCountsAsGiven};
+  const Overrides fixed{{"assign_radius_px", std::int64_t{0}}, kCountsAsGiven};
   for (const float depth_m : {1.0F, 1.2F, 1.5F, 3.0F}) {
     FlatInput input = flat_input(60, 60, depth_m);
     cv::rectangle(input.edges.mask, cv::Rect(20, 20, 10, 10), cv::Scalar(255));  // 8x8 inside
@@ -170,9 +176,9 @@ TEST(GrowSurfaces, EachRegionIsJudgedAtItsOwnDepthAndIdsStayConsecutive) {
     for (int x = 31; x < 39; ++x)
       input.points.points.at<cv::Vec3f>(y, x)[2] = 2.F;
   }
-  const GrowResult grown =
-      run_grow(input.edges, input.points,
-               {{"min_size_reference_depth_m", 1.0}, {"assign_radius_px", std::int64_t{0}}});
+  const GrowResult grown = run_grow(
+      input.edges, input.points,
+      {{"min_size_reference_depth_m", 1.0}, {"assign_radius_px", std::int64_t{0}}, kCountsAsGiven});
   EXPECT_EQ(grown.patches.count, 2);
   EXPECT_EQ(grown.patches.labels.at<std::int32_t>(0, 0), 1);
   EXPECT_EQ(grown.patches.labels.at<std::int32_t>(8, 12), 0);
@@ -220,17 +226,47 @@ TEST(GrowSurfaces, AFarBoxFaceBecomesAPatchWhereTheSameFootprintNearDoesNot) {
 // grid of tiny objects gives) warns; a clean frame does not.
 TEST(GrowSurfaces, WarnsWhenMostPixelsAreInNoPatch) {
   FlatInput input = flat_input(120, 120);
-  EXPECT_TRUE(run_grow(input.edges, input.points).warnings.empty());
+  EXPECT_TRUE(run_grow(input.edges, input.points, {kCountsAsGiven}).warnings.empty());
   for (int i = 0; i < 120; i += 8) {
     cv::line(input.edges.mask, {i, 0}, {i, 119}, cv::Scalar(255));
     cv::line(input.edges.mask, {0, i}, {119, i}, cv::Scalar(255));
   }
-  const GrowResult noisy = run_grow(input.edges, input.points);
+  const GrowResult noisy = run_grow(input.edges, input.points, {kCountsAsGiven});
   EXPECT_GT(noisy.unassigned_ratio, 0.25);
   ASSERT_EQ(noisy.warnings.size(), 1u);
   EXPECT_NE(noisy.warnings[0].find("no patch"), std::string::npos) << noisy.warnings[0];
-  EXPECT_TRUE(
-      run_grow(input.edges, input.points, {{"max_unassigned_ratio", 1.0}}).warnings.empty());
+  EXPECT_TRUE(run_grow(input.edges, input.points, {{"max_unassigned_ratio", 1.0}, kCountsAsGiven})
+                  .warnings.empty());
+}
+
+// min_size_px is given for 640 x 480: a region of 18 x 18 = 324 px (enclosed by a 1-px edge
+// line) is kept at 640 x 480 and in a 320 x 240 image (the count there is 25), and dropped in a
+// 1280 x 960 one (400), where the same surface would cover four times the pixels.
+TEST(GrowSurfaces, RegionSizesScaleWithTheImageArea) {
+  const Overrides params{{"min_size_px", std::int64_t{100}}, {"assign_radius_px", std::int64_t{0}}};
+  struct Case {
+    int width;
+    int height;
+    bool kept;
+  };
+  for (const Case& c : {Case{640, 480, true}, Case{320, 240, true}, Case{1280, 960, false}}) {
+    FlatInput input = flat_input(c.width, c.height);
+    cv::rectangle(input.edges.mask, cv::Rect(40, 40, 20, 20), cv::Scalar(255));  // 18x18 inside
+    const GrowResult grown = run_grow(input.edges, input.points, params);
+    EXPECT_EQ(grown.patches.count, c.kept ? 2 : 1) << c.width;
+    EXPECT_EQ(grown.patches.labels.at<std::int32_t>(50, 50), c.kept ? 2 : 0) << c.width;
+  }
+  // A 5 x 5 region at 320 x 240: under the 25 px the scaled count asks for, kept when the counts
+  // are taken as given (min_size_px 20) and dropped when scaled (5).
+  FlatInput small = flat_input(320, 240);
+  cv::rectangle(small.edges.mask, cv::Rect(40, 40, 6, 6), cv::Scalar(255));  // 4x4 inside
+  Overrides as_given = params;
+  as_given["min_size_px"] = std::int64_t{20};
+  as_given.insert(kCountsAsGiven);
+  EXPECT_EQ(run_grow(small.edges, small.points, as_given).patches.count, 1);
+  Overrides scaled = as_given;
+  scaled["reference_area_px"] = std::int64_t{640 * 480};
+  EXPECT_EQ(run_grow(small.edges, small.points, scaled).patches.count, 2);
 }
 
 TEST(GrowSurfaces, BoxFacesBecomeSeparateTouchingPatches) {

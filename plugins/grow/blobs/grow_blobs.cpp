@@ -49,8 +49,8 @@ const Param<double> kDistanceGrowthStart{
 const Param<std::int64_t> kMinSize{
     "min_size_px",
     200,
-    "N_blob: smaller blobs are removed (not graspable). A pixel count: scale it with "
-    "the image area.",
+    "N_blob: smaller blobs are removed (not graspable). A pixel count at reference_area_px: it "
+    "scales with the image area.",
     {.unit = "px", .min = 1.0, .max = 1.0e8, .origin = "paper: 50 at 320x240, x4"}};
 const Param<double> kMinSizeReferenceDepth{
     "min_size_reference_depth_m",
@@ -70,7 +70,7 @@ const Param<std::int64_t> kMinSizeFar{
     "min_size_far_px",
     50,
     "With min_size_reference_depth_m: the fewest pixels a far blob is kept with, however far. A "
-    "pixel count: it scales with the image area.",
+    "pixel count at reference_area_px: it scales with the image area.",
     {.unit = "px",
      .min = 1.0,
      .max = 1.0e8,
@@ -189,7 +189,8 @@ StageSpec GrowBlobs::spec() {
       .declare(kPatches, kPoints, kPlanes, kPlaneLabels, kBlobs, kMaxDistance, kDistanceGrowthStart,
                kMinSize, kMinSizeReferenceDepth, kMinSizeFar, kFrontOnly, kMaxBehindFraction,
                kBehindMargin, kMaxOnPlaneFraction, kOnPlaneDistance, kOnTable, kMinRise,
-               kMinRaisedFraction, kTableMargin, kMaxOutsideFraction, kEdgePixels, kWorkspace)
+               kMinRaisedFraction, kTableMargin, kMaxOutsideFraction, kEdgePixels, kWorkspace,
+               algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
@@ -197,6 +198,7 @@ GrowBlobs::GrowBlobs(const Params& params)
     : gate_(static_cast<float>(kMaxDistance(params)),
             static_cast<float>(kDistanceGrowthStart(params))),
       size_{kMinSize(params), kMinSizeReferenceDepth(params), kMinSizeFar(params)},
+      reference_area_px_(algo::kReferenceAreaParam(params)),
       edge_pixels_(kEdgePixels(params)),
       workspace_(kWorkspace(params).box) {
   rule_.drop_behind = kFrontOnly(params);
@@ -293,7 +295,8 @@ void GrowBlobs::process(ProcessContext& ctx) {
                                mask.cols);
     collect_edge_pixels(edge, row, mask.cols, edge_pixels);
   }
-  EuclideanRegions regions = grow_euclidean_regions(mask, xyz, gate_, size_);
+  const algo::RegionSizeRule size = size_.scaled(algo::PixelScale(reference_area_px_, xyz.size()));
+  EuclideanRegions regions = grow_euclidean_regions(mask, xyz, gate_, size);
   const SupportPlanes* planes = kPlanes(ctx);
   EdgeAttachment attachment;
   if (plane_labels != nullptr) {
@@ -302,7 +305,7 @@ void GrowBlobs::process(ProcessContext& ctx) {
     // (a table seen from its own height) as objects.
     const bool have_plane = planes != nullptr && !planes->planes.empty();
     attachment =
-        attach_edge_pixels(regions, edges, edge_pixels, xyz, gate_, have_plane ? &size_ : nullptr);
+        attach_edge_pixels(regions, edges, edge_pixels, xyz, gate_, have_plane ? &size : nullptr);
   }
   DroppedBlobs dropped;
   if (planes != nullptr) dropped = drop_background_blobs(regions, xyz, *planes, rule_);

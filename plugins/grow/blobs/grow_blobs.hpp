@@ -22,6 +22,7 @@ class GrowBlobs final : public Stage {
  private:
   algo::NeighbourGate gate_;
   algo::RegionSizeRule size_;
+  std::int64_t reference_area_px_;  // pixel counts are given for this image area
   bool edge_pixels_;
   BackgroundBlobRule rule_;
   std::optional<Eigen::AlignedBox3f> workspace_;
