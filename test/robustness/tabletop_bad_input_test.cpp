@@ -374,12 +374,16 @@ TEST(TabletopBadInput, AQuarterVgaCameraFindsTheSmallObjectsToo) {
   expect_run_completed(scaled, data);
   EXPECT_EQ(objects_found_alone(scene.object, 5, scaled.frame("qvga").labels), 4);
   EXPECT_EQ(scaled.frame("qvga").objects(), 4u) << scaled.frame("qvga").json;
-  const TabletopRun as_given = run_tabletop(data, {{"patches.reference_area_px", "0"},
-                                                   {"planes.reference_area_px", "0"},
-                                                   {"blobs.reference_area_px", "0"},
-                                                   {"objects.reference_area_px", "0"}});
-  expect_run_completed(as_given, data);
-  EXPECT_LT(objects_found_alone(scene.object, 5, as_given.frame("qvga").labels), 4);
+  // The graph's one parameter reaches every stage with pixel counts, in the variants too.
+  for (const std::string variant : {"", "bsp", "convex"}) {
+    const TabletopRun as_given = run_tabletop(data, {}, variant, {{"reference_area_px", "0"}});
+    expect_run_completed(as_given, data);
+    EXPECT_LT(objects_found_alone(scene.object, 5, as_given.frame("qvga").labels), 4) << variant;
+    const TabletopRun variant_scaled = run_tabletop(data, {}, variant);
+    expect_run_completed(variant_scaled, data);
+    EXPECT_EQ(objects_found_alone(scene.object, 5, variant_scaled.frame("qvga").labels), 4)
+        << variant;
+  }
 }
 
 }  // namespace

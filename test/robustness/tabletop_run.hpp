@@ -123,14 +123,16 @@ inline std::vector<std::int64_t> object_ids(const std::string& json) {
 
 // Runs graphs/tabletop.yaml on `data` (graph params input and output), with optional node
 // parameter overrides (--set node.param=value).
-inline TabletopRun run_tabletop(const Dataset& data,
-                                const std::vector<std::pair<std::string, std::string>>& sets = {},
-                                const std::string& variant = "") {
+inline TabletopRun run_tabletop(
+    const Dataset& data, const std::vector<std::pair<std::string, std::string>>& sets = {},
+    const std::string& variant = "",
+    const std::vector<std::pair<std::string, std::string>>& params = {}) {
   TabletopRun run;
   const auto start = std::chrono::steady_clock::now();
   Diagnostics diagnostics;
   LoadOptions options;
   options.params = {{"input", data.input().string()}, {"output", data.output().string()}};
+  options.params.insert(params.begin(), params.end());
   options.sets = sets;
   options.variant = variant;
   const GraphSpec spec = load_graph_file(

@@ -1,0 +1,50 @@
+// graphs/tabletop.yaml's graph parameters reach the stages they are meant for, in every variant
+// and in the graphs that extend it.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+
+#include "bundled_plugins.hpp"
+#include "facet/framework/diagnostics.hpp"
+#include "facet/framework/graph_spec.hpp"
+#include "facet/framework/validated_graph.hpp"
+
+namespace facet::test {
+namespace {
+
+const std::filesystem::path kGraphs = std::filesystem::path(FACET_SOURCE_DIR) / "graphs";
+
+// reference_area_px: every node whose stage has pixel counts takes the graph's value, so one
+// --param sets them all (a crop of a larger image: 0). A variant that swaps a stage passes it on
+// too; a node that forgot it would keep the stage's default and scale alone.
+TEST(TabletopParams, ReferenceAreaReachesEveryStageWithPixelCounts) {
+  const std::pair<const char*, const char*> graphs[] = {
+      {"tabletop.yaml", ""},        {"tabletop.yaml", "bsp"},     {"tabletop.yaml", "convex"},
+      {"tabletop.yaml", "pca5"},    {"tabletop.yaml", "pca_box"}, {"tabletop_bsp.yaml", ""},
+      {"tabletop_convex.yaml", ""}, {"tabletop_graph.yaml", ""},  {"tabletop_cloud.yaml", ""},
+  };
+  for (const auto& [file, variant] : graphs) {
+    SCOPED_TRACE(std::string(file) + " " + variant);
+    Diagnostics diagnostics;
+    LoadOptions options;
+    options.params = {{"reference_area_px", "12345"}};
+    options.variant = variant;
+    const GraphSpec spec = load_graph_file(kGraphs / file, options, diagnostics);
+    const ValidatedGraph graph = validate_graph(spec, bundled_plugins(), diagnostics);
+    ASSERT_FALSE(diagnostics.has_errors()) << diagnostics.str();
+    int with_counts = 0;
+    for (const ValidatedNode& node : graph.nodes) {
+      if (!node.params.contains("reference_area_px")) continue;
+      ++with_counts;
+      EXPECT_EQ(node.params.get_int("reference_area_px"), 12345) << node.id;
+    }
+    // grow.surfaces, planes.support, grow.blobs and the partition stage.
+    EXPECT_EQ(with_counts, 4);
+  }
+}
+
+}  // namespace
+}  // namespace facet::test
