@@ -256,8 +256,8 @@ TEST(GrowSurfaces, RegionSizesScaleWithTheImageArea) {
     EXPECT_EQ(grown.patches.count, c.kept ? 2 : 1) << c.width;
     EXPECT_EQ(grown.patches.labels.at<std::int32_t>(50, 50), c.kept ? 2 : 0) << c.width;
   }
-  // A 5 x 5 region at 320 x 240: under the 25 px the scaled count asks for, kept when the counts
-  // are taken as given (min_size_px 20) and dropped when scaled (5).
+  // A 4 x 4 region (16 px) at 320 x 240 with min_size_px 20: dropped when the count is taken as
+  // given, kept when it is scaled (to 5).
   FlatInput small = flat_input(320, 240);
   cv::rectangle(small.edges.mask, cv::Rect(40, 40, 6, 6), cv::Scalar(255));  // 4x4 inside
   Overrides as_given = params;
