@@ -1,5 +1,6 @@
 #include "synthetic/synthetic_source.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <opencv2/core.hpp>
@@ -178,7 +179,10 @@ const Param<int> kMinVisible{
     "Every object shows at least this many pixels to a perfect camera; layouts that "
     "do not are drawn again (with the view drawn again too when camera, table_edge or "
     "wall_placement is random; then only pixels the sensor can measure count: in "
-    "[min_depth_m, max_depth_m] and, with shadows, lit by the projector).",
+    "[min_depth_m, max_depth_m] and, with shadows, lit by the projector). A pixel count for a "
+    "focal length of 525 px (a Kinect at 640 x 480): it scales with the square of the focal "
+    "length, as the pixels an object covers do, so that a seed gives the same layouts at any "
+    "resolution.",
     {.unit = "px", .min = 1.0}};
 const Param<bool> kNoise{
     "noise", true,
@@ -319,7 +323,7 @@ SyntheticSource::SyntheticSource(const Params& params)
       frames_(kFrames(params)),
       new_scene_each_frame_(kScene(params) == SceneMode::new_layout),
       fps_hz_(kFps(params)),
-      min_visible_px_(kMinVisible(params)) {
+      min_visible_px_(0) {
   view_.random_camera = kCamera(params) == CameraMode::random;
   view_.camera_distance_m = kCameraDistance(params);
   view_.camera_tilt_deg = kCameraTilt(params);
@@ -356,6 +360,14 @@ SyntheticSource::SyntheticSource(const Params& params)
   const double focal_px = kFocal(params);
   const double focal = focal_px > 0.0 ? focal_px : 525.0 * width / 640.0;
   intrinsics_ = {focal, focal, 0.5 * (width - 1), 0.5 * (height - 1), width, height};
+  // An object covers pixels in proportion to the focal length squared; the count is exact at
+  // 525 px, so 640 x 480 layouts are those of before.
+  const double kinect_focal_px = 525.0;
+  const double area_factor = (focal / kinect_focal_px) * (focal / kinect_focal_px);
+  min_visible_px_ =
+      area_factor == 1.0
+          ? kMinVisible(params)
+          : std::max(1, static_cast<int>(std::lround(kMinVisible(params) * area_factor)));
 
   if (noise_.grazing_end_deg < noise_.grazing_start_deg) {
     throw StageError("param grazing_end_deg=" + format_number(noise_.grazing_end_deg) +
