@@ -91,8 +91,8 @@ TEST(SyntheticSource, ResolutionScalesTheFocalLength) {
 
 // min_visible_px is given for a Kinect at 640 x 480 and scales with the focal length squared, so
 // a seed draws the same layout at 320 x 240: its labels are the 640 x 480 labels at every 2nd
-// row and column, but for pixels along outlines. With the count taken as given, this seed's
-// view was drawn again at 320 x 240 (a quarter of its objects' pixels fell under 150), and only
+// row and column, but for pixels along outlines. With the count taken as given, this seed drew
+// another layout at 320 x 240 (an object of the first showed fewer than 150 px there), and only
 // 76 % of the labels agreed.
 TEST(SyntheticSource, ASeedGivesTheSameLayoutAtEveryResolution) {
   ParamMap params = preset_params("pile20", 3001);
