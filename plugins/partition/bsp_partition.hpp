@@ -37,7 +37,6 @@ class BspPartitioner {
  public:
   explicit BspPartitioner(BspRule rule) : rule_(rule) {}
 
-  const BspRule& rule() const { return rule_; }
   // For a frame of another resolution (its pixel counts scaled).
   void set_rule(const BspRule& rule) { rule_ = rule; }
 

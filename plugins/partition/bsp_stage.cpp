@@ -96,8 +96,8 @@ void PartitionBsp::process(ProcessContext& ctx) {
   check_partition_inputs(blobs.labels, patches.labels, points.points);
   const algo::PixelScale scale(reference_area_px_, blobs.labels.size());
   BspRule rule = rule_;
-  rule.min_split_px = static_cast<std::int32_t>(scale.count(rule_.min_split_px));
-  rule.min_face_px = static_cast<std::int32_t>(scale.count(rule_.min_face_px, 3));
+  rule.min_split_px = scale.count(rule_.min_split_px);
+  rule.min_face_px = scale.count(rule_.min_face_px, 3);
   partitioner_.set_rule(rule);
   segments_.build(blobs.labels, patches.labels, points.points);
   cv::Mat objects = cv::Mat::zeros(blobs.labels.size(), CV_32SC1);

@@ -44,7 +44,6 @@ class ConvexMerger {
  public:
   explicit ConvexMerger(ConvexRule rule) : rule_(rule) {}
 
-  const ConvexRule& rule() const { return rule_; }
   // For a frame of another resolution (its pixel counts scaled).
   void set_rule(const ConvexRule& rule) { rule_ = rule; }
 

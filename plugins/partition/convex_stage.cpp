@@ -71,8 +71,8 @@ void PartitionConvex::process(ProcessContext& ctx) {
   const auto& points = kPoints(ctx);
   check_partition_inputs(blobs.labels, patches.labels, points.points);
   ConvexRule rule = rule_;
-  rule.min_patch_px = static_cast<std::int32_t>(
-      algo::PixelScale(reference_area_px_, blobs.labels.size()).count(rule_.min_patch_px, 3));
+  rule.min_patch_px =
+      algo::PixelScale(reference_area_px_, blobs.labels.size()).count(rule_.min_patch_px, 3);
   merger_.set_rule(rule);
   segments_.build(blobs.labels, patches.labels, points.points);
   neighbours_.build(adjacency, segments_.max_patch);

@@ -418,11 +418,11 @@ PartitionGraph::PartitionGraph(const Params& params)
 PartitionGraph::FrameRules PartitionGraph::rules_for(cv::Size image) const {
   const algo::PixelScale scale(reference_area_px_, image);
   FrameRules rules{rule_.nodes, rule_.convex_rule, core_rule_, front_rule_};
-  rules.nodes.min_patch_px = static_cast<std::int32_t>(scale.count(rule_.nodes.min_patch_px, 3));
+  rules.nodes.min_patch_px = scale.count(rule_.nodes.min_patch_px, 3);
   rules.convex.min_patch_px = rules.nodes.min_patch_px;
   rules.core.radius_px = scale.length(core_rule_.radius_px);
-  rules.core.min_px = static_cast<std::int32_t>(scale.count(core_rule_.min_px));
-  rules.front.min_px = static_cast<std::int32_t>(scale.count(front_rule_.min_px));
+  rules.core.min_px = scale.count(core_rule_.min_px);
+  rules.front.min_px = scale.count(front_rule_.min_px);
   return rules;
 }
 

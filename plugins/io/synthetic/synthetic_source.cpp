@@ -18,6 +18,8 @@ constexpr std::uint64_t kLayoutStream = 1;
 constexpr std::uint64_t kNoiseStream = 2;
 constexpr std::uint64_t kViewStream = 3;
 constexpr int kLayoutAttempts = 60;
+// The OpenNI Kinect's focal length at 640 x 480, which the defaults stand for.
+constexpr double kKinectFocalPx = 525.0;
 
 std::vector<ParamValue> preset_choices() {
   std::vector<ParamValue> choices;
@@ -286,6 +288,14 @@ std::vector<int> measurable_pixels(const IdealFrame& frame, const Scene& scene,
   return counts;
 }
 
+// min_visible_px at another focal length: an object covers pixels in proportion to its square.
+// Exact at the Kinect's, so 640 x 480 layouts are drawn as they always were.
+int min_visible_at_focal(int min_visible_px, double focal_px) {
+  const double area_factor = (focal_px / kKinectFocalPx) * (focal_px / kKinectFocalPx);
+  if (area_factor == 1.0) return min_visible_px;
+  return std::max(1, static_cast<int>(std::lround(min_visible_px * area_factor)));
+}
+
 }  // namespace
 
 StageSpec SyntheticSource::spec() {
@@ -322,8 +332,7 @@ SyntheticSource::SyntheticSource(const Params& params)
       seed_(static_cast<std::uint64_t>(kSeed(params))),
       frames_(kFrames(params)),
       new_scene_each_frame_(kScene(params) == SceneMode::new_layout),
-      fps_hz_(kFps(params)),
-      min_visible_px_(0) {
+      fps_hz_(kFps(params)) {
   view_.random_camera = kCamera(params) == CameraMode::random;
   view_.camera_distance_m = kCameraDistance(params);
   view_.camera_tilt_deg = kCameraTilt(params);
@@ -358,16 +367,9 @@ SyntheticSource::SyntheticSource(const Params& params)
   const int width = kWidth(params);
   const int height = kHeight(params);
   const double focal_px = kFocal(params);
-  const double focal = focal_px > 0.0 ? focal_px : 525.0 * width / 640.0;
+  const double focal = focal_px > 0.0 ? focal_px : kKinectFocalPx * width / 640.0;
   intrinsics_ = {focal, focal, 0.5 * (width - 1), 0.5 * (height - 1), width, height};
-  // An object covers pixels in proportion to the focal length squared; the count is exact at
-  // 525 px, so 640 x 480 layouts are those of before.
-  const double kinect_focal_px = 525.0;
-  const double area_factor = (focal / kinect_focal_px) * (focal / kinect_focal_px);
-  min_visible_px_ =
-      area_factor == 1.0
-          ? kMinVisible(params)
-          : std::max(1, static_cast<int>(std::lround(kMinVisible(params) * area_factor)));
+  min_visible_px_ = min_visible_at_focal(kMinVisible(params), focal);
 
   if (noise_.grazing_end_deg < noise_.grazing_start_deg) {
     throw StageError("param grazing_end_deg=" + format_number(noise_.grazing_end_deg) +

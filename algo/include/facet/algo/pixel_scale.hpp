@@ -17,8 +17,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <opencv2/core/types.hpp>
+#include <type_traits>
 
 #include "facet/contract.hpp"
 
@@ -59,11 +61,13 @@ class PixelScale {
   double area_factor() const { return area_factor_; }
   double length_factor() const { return length_factor_; }
 
-  // A pixel count, rounded, never below least_px.
-  std::int64_t count(std::int64_t count_px, std::int64_t least_px = 1) const {
+  // A pixel count, rounded, never below least_px; in the integer type the rule holds it in.
+  template <std::integral Count>
+  Count count(Count count_px, std::type_identity_t<Count> least_px = 1) const {
     if (area_factor_ == 1.0) return count_px;
-    const auto scaled = std::llround(static_cast<double>(count_px) * area_factor_);
-    return std::max(least_px, static_cast<std::int64_t>(scaled));
+    const auto scaled =
+        static_cast<Count>(std::llround(static_cast<double>(count_px) * area_factor_));
+    return std::max(least_px, scaled);
   }
   // A length in pixels (a width, a radius), unrounded.
   double length(double length_px) const { return length_px * length_factor_; }
