@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace facet::partition {
 
@@ -28,12 +29,26 @@ void PatchNeighbours::build(const PatchAdjacency& adjacency, std::int32_t max_pa
   for (std::size_t k = 1; k < offsets_.size(); ++k)
     offsets_[k] += offsets_[k - 1];
   neighbours_.assign(static_cast<std::size_t>(offsets_.back()), 0);
+  contacts_.assign(neighbours_.size(), 0);
+  // An adjacency without counts (a hand-made one) says only that the patches touch.
+  const bool counted = adjacency.contact_px.size() == adjacency.pairs.size();
   std::vector<std::int32_t> fill(offsets_.begin(), offsets_.end() - 1);
-  for (const auto& [a, b] : adjacency.pairs) {
+  for (std::size_t k = 0; k < adjacency.pairs.size(); ++k) {
+    const auto [a, b] = adjacency.pairs[k];
     if (a <= 0 || b <= 0 || a == b) continue;
-    neighbours_[static_cast<std::size_t>(fill[static_cast<std::size_t>(std::min(a, b))]++)] =
-        std::max(a, b);
+    const auto slot = static_cast<std::size_t>(fill[static_cast<std::size_t>(std::min(a, b))]++);
+    neighbours_[slot] = std::max(a, b);
+    contacts_[slot] = counted ? adjacency.contact_px[k] : 1;
   }
+}
+
+std::int32_t PatchNeighbours::contact_px(std::int32_t a, std::int32_t b) const {
+  if (a > b) std::swap(a, b);
+  const std::int32_t* first = begin(a);
+  if (first == nullptr) return 0;
+  const std::int32_t* last = end(a);
+  const std::int32_t* it = std::find(first, last, b);
+  return it == last ? 0 : contacts_[static_cast<std::size_t>(it - neighbours_.data())];
 }
 
 const std::int32_t* PatchNeighbours::begin(std::int32_t patch) const {

@@ -34,10 +34,13 @@ class PatchNeighbours {
   // Neighbours of `patch` with a larger id.
   const std::int32_t* begin(std::int32_t patch) const;
   const std::int32_t* end(std::int32_t patch) const;
+  // The adjacency's contact_px of two patches; 0 when they do not touch.
+  std::int32_t contact_px(std::int32_t a, std::int32_t b) const;
 
  private:
   std::vector<std::int32_t> offsets_;
   std::vector<std::int32_t> neighbours_;
+  std::vector<std::int32_t> contacts_;  // contact_px of each entry of neighbours_
 };
 
 class ConvexMerger {

@@ -22,6 +22,9 @@ struct GraphEdge {
   std::int32_t a = 0;  // node indices, a < b
   std::int32_t b = 0;
   EdgeFeature feature = EdgeFeature::convex;
+  // Touching 8-neighbour pixel pairs of the two patches in the image (0 when they do not
+  // touch): how strongly the edge holds when a step pair must be separated (graph_steps.hpp).
+  std::int32_t contact_px = 0;
 };
 
 // What the features read besides the gathered points: the images, for looking along the image
