@@ -8,7 +8,7 @@ namespace facet::partition {
 
 const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
                                                   std::span<const GraphEdge> edges,
-                                                  const CutRule& rule) {
+                                                  const CutRule& rule, const StepPairs& steps) {
   const auto n = static_cast<std::size_t>(std::max(node_count, 0));
   groups_joined_.reset(n);
   neighbours_.assign(n, {});
@@ -44,6 +44,8 @@ const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
   for (auto& members : components) {
     split(std::move(members), rule);
   }
+  step_separations_ = 0;
+  if (!steps.empty()) separate_steps(edges, steps);
   // Renumber in order of each group's first node, whatever order the splits produced them in.
   std::vector<std::int32_t> renumber(static_cast<std::size_t>(next_group_), -1);
   std::int32_t count = 0;
@@ -78,6 +80,70 @@ void GraphCut::split(std::vector<std::int32_t> members, const CutRule& rule) {
   for (const std::int32_t node : members)
     group_[static_cast<std::size_t>(node)] = next_group_;
   ++next_group_;
+}
+
+void GraphCut::separate_steps(std::span<const GraphEdge> edges, const StepPairs& steps) {
+  std::vector<std::int32_t> joined_groups;
+  for (const auto& [a, b] : steps) {
+    const std::int32_t group = group_[static_cast<std::size_t>(a)];
+    if (group == group_[static_cast<std::size_t>(b)]) joined_groups.push_back(group);
+  }
+  std::sort(joined_groups.begin(), joined_groups.end());
+  joined_groups.erase(std::unique(joined_groups.begin(), joined_groups.end()), joined_groups.end());
+  if (joined_groups.empty()) return;
+  const auto in_joined_group = [&](std::int32_t node) {
+    return std::binary_search(joined_groups.begin(), joined_groups.end(),
+                              group_[static_cast<std::size_t>(node)]);
+  };
+  // The edges of those groups, most contact first; ties in node order, so the result is
+  // deterministic. An edge within a group has both ends in it.
+  std::vector<GraphEdge> order;
+  for (const GraphEdge& edge : edges) {
+    if (edge.a >= 0 && edge.b >= 0 && static_cast<std::size_t>(edge.a) < group_.size() &&
+        static_cast<std::size_t>(edge.b) < group_.size() && edge.a != edge.b &&
+        in_joined_group(edge.a) &&
+        group_[static_cast<std::size_t>(edge.a)] == group_[static_cast<std::size_t>(edge.b)]) {
+      order.push_back(edge);
+    }
+  }
+  std::sort(order.begin(), order.end(), [](const GraphEdge& x, const GraphEdge& y) {
+    if (x.contact_px != y.contact_px) return x.contact_px > y.contact_px;
+    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
+  regrouped_.reset(group_.size());
+  for (const GraphEdge& edge : order) {
+    const std::int32_t root_a = regrouped_.find(edge.a);
+    const std::int32_t root_b = regrouped_.find(edge.b);
+    if (root_a == root_b) continue;
+    const bool joins_a_step = std::any_of(steps.begin(), steps.end(), [&](const auto& step) {
+      const std::int32_t first = regrouped_.find(step.first);
+      const std::int32_t second = regrouped_.find(step.second);
+      return (first == root_a && second == root_b) || (first == root_b && second == root_a);
+    });
+    if (!joins_a_step) regrouped_.unite(root_a, root_b);
+  }
+  // Each group's part that holds its first node keeps the group's id; the others get new ones.
+  std::vector<std::int32_t> id_of_root(group_.size(), -1);
+  std::vector<char> group_taken(static_cast<std::size_t>(next_group_), 0);
+  for (std::size_t i = 0; i < group_.size(); ++i) {
+    const auto node = static_cast<std::int32_t>(i);
+    if (!in_joined_group(node)) continue;
+    const auto root = static_cast<std::size_t>(regrouped_.find(node));
+    if (id_of_root[root] < 0) {
+      const auto group = static_cast<std::size_t>(group_[i]);
+      if (group_taken[group] == 0) {
+        group_taken[group] = 1;
+        id_of_root[root] = group_[i];
+      } else {
+        id_of_root[root] = next_group_++;
+      }
+    }
+  }
+  step_separations_ = static_cast<std::int64_t>(joined_groups.size());
+  for (std::size_t i = 0; i < group_.size(); ++i) {
+    const auto root = static_cast<std::size_t>(regrouped_.find(static_cast<std::int32_t>(i)));
+    if (id_of_root[root] >= 0) group_[i] = id_of_root[root];
+  }
 }
 
 bool GraphCut::has_cycle(const std::vector<std::int32_t>& members) {

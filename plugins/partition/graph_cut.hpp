@@ -8,6 +8,7 @@
 
 #include "facet/algo/disjoint_sets.hpp"
 #include "partition/graph_edges.hpp"
+#include "partition/graph_steps.hpp"
 
 namespace facet::partition {
 
@@ -31,10 +32,15 @@ struct CutRule {
 class GraphCut {
  public:
   // Group of every node (0, 1, ... in order of each group's first node). Duplicate edges (two
-  // features on one pair) count once.
+  // features on one pair) count once. A group that still holds both nodes of a step pair is
+  // then regrouped from its own edges, those of most contact first, leaving out every edge
+  // that would join the two sides of a step pair: a corner where a top meets the other box's
+  // front, or the top two flush boxes share, gives way before a face's long crease.
   const std::vector<std::int32_t>& groups(std::int32_t node_count, std::span<const GraphEdge> edges,
-                                          const CutRule& rule);
+                                          const CutRule& rule, const StepPairs& steps = {});
   std::int64_t cuts() const { return cuts_; }
+  // Groups regrouped for a step pair in the last call.
+  std::int64_t step_separations() const { return step_separations_; }
 
  private:
   // Splits `members` (a connected set) by its minimum cut while the cut is cheap enough.
@@ -44,6 +50,8 @@ class GraphCut {
   double minimum_cut(const std::vector<std::int32_t>& members, std::vector<char>& side);
   // Whether the subgraph induced by `members` (connected) has a cycle.
   bool has_cycle(const std::vector<std::int32_t>& members);
+  // Regroups each group that holds a step pair (see groups()).
+  void separate_steps(std::span<const GraphEdge> edges, const StepPairs& steps);
 
   algo::DisjointSets groups_joined_;  // nodes joined by an edge: the connected components
   std::vector<std::vector<std::int32_t>> neighbours_;
@@ -51,6 +59,8 @@ class GraphCut {
   std::vector<std::int32_t> local_;  // node -> index in the current members, -1 outside
   std::int32_t next_group_ = 0;
   std::int64_t cuts_ = 0;
+  algo::DisjointSets regrouped_;  // the nodes of the groups separate_steps regroups
+  std::int64_t step_separations_ = 0;
 };
 
 }  // namespace facet::partition

@@ -14,6 +14,7 @@
 #include "partition/graph_edges.hpp"
 #include "partition/graph_front_bodies.hpp"
 #include "partition/graph_nodes.hpp"
+#include "partition/graph_steps.hpp"
 
 namespace facet::partition {
 
@@ -27,6 +28,7 @@ struct GraphRule {
   CurvatureRule curvature_rule;
   bool floor = true;
   FloorRule floor_rule;
+  StepRule steps;
   CutRule cut;
 };
 

@@ -516,6 +516,28 @@ TEST(PartitionGraph, TouchingBoxesOnATableAreTwoObjects) {
   EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
 }
 
+// Two boxes of one height side by side, the right one set back 3 cm: their tops are one plane
+// (joined as one surface an edge line broke, as the shipped graphs do) and the left box's top
+// meets the right box's front at a corner. The fronts face the same way 3 cm apart, which no
+// convex body shows: a step pair, so the tops' and the corner's edges give way.
+TEST(PartitionGraph, BoxesSideBySideOneSetBackAreTwoObjects) {
+  Tabletop t;
+  t.box(-0.06, 0.0, {0.06, 0.05, 0.05}).box(0.06, 0.03, {0.06, 0.05, 0.05});
+  const TableScene s = on_table(t);
+  const PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  const std::map<std::string, ParamValue> touching{{"coplanar_touching_max_distance_m", 0.005}};
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, touching, &metrics);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+  EXPECT_GE(metric_value(metrics, "step_pairs"), 1.0);
+  EXPECT_EQ(metric_value(metrics, "step_separations"), 1.0);
+  auto off = touching;
+  off["step_min_offset_m"] = 0.0;
+  EXPECT_EQ(run_graph(input, off).count, 1);
+}
+
 TEST(PartitionGraph, ConvexFeatureOffLeavesEveryFaceApart) {
   const PartitionInput input = single_box();
   EXPECT_EQ(run_graph(input).count, 1);
@@ -632,6 +654,50 @@ TEST(PartitionGraphCut, DuplicateEdgesCountOnceAndIsolatedNodesAreGroups) {
   const auto groups = cut.groups(7, edges, CutRule{});
   EXPECT_EQ(group_count(groups), 3);  // node 6 has no edge
   EXPECT_EQ(groups[6], 2);            // groups are numbered by their first node
+}
+
+// The top of a box (0) and its front (2), the top of a second box (1) and its front (3), the
+// fronts a step apart: the tops were joined as one surface (0-1) and the first top meets the
+// second front at a corner (0-3, a few contacts).
+std::vector<GraphEdge> boxes_set_back() {
+  return {{0, 2, EdgeFeature::convex, 150},
+          {1, 3, EdgeFeature::convex, 120},
+          {0, 1, EdgeFeature::coplanar, 60},
+          {0, 3, EdgeFeature::convex, 9}};
+}
+
+TEST(PartitionGraphCut, AStepPairIsSeparatedAtItsWeakestEdges) {
+  GraphCut cut;
+  EXPECT_EQ(group_count(cut.groups(4, boxes_set_back(), CutRule{})), 1);
+  EXPECT_EQ(cut.step_separations(), 0);
+  const partition::StepPairs steps{{2, 3}};
+  const auto groups = cut.groups(4, boxes_set_back(), CutRule{}, steps);
+  EXPECT_EQ(group_count(groups), 2);
+  EXPECT_EQ(groups[0], groups[2]);  // the long crease holds, the corner and the tops give way
+  EXPECT_EQ(groups[1], groups[3]);
+  EXPECT_NE(groups[0], groups[1]);
+  EXPECT_EQ(cut.step_separations(), 1);
+}
+
+TEST(PartitionGraphCut, StepPairsLeaveOtherGroupsAlone) {
+  GraphCut cut;
+  auto edges = boxes_set_back();
+  edges.push_back({4, 5, EdgeFeature::convex, 1});  // a second object, weakly joined
+  const auto groups = cut.groups(7, edges, CutRule{}, {{2, 3}});
+  EXPECT_EQ(group_count(groups), 4);  // the two boxes, the second object, node 6 alone
+  EXPECT_EQ(groups[4], groups[5]);
+  // A step pair already in two groups changes nothing.
+  const auto apart = cut.groups(7, edges, CutRule{}, {{2, 4}});
+  EXPECT_EQ(group_count(apart), 3);
+  EXPECT_EQ(cut.step_separations(), 0);
+}
+
+TEST(PartitionGraphCut, ADirectEdgeBetweenAStepPairIsLeftOut) {
+  // The two faces of a step pair joined directly: the edge is left out.
+  GraphCut cut;
+  const std::vector<GraphEdge> edges{{0, 1, EdgeFeature::coplanar, 40}};
+  const auto groups = cut.groups(2, edges, CutRule{}, {{0, 1}});
+  EXPECT_NE(groups[0], groups[1]);
 }
 
 }  // namespace
