@@ -1,23 +1,9 @@
 #include "partition/graph_steps.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace facet::partition {
-
-namespace {
-
-// The smaller of the two centroids' distances from the other's plane: both faces must stand
-// off the other's plane, so that two pieces of one face whose fitted normals differ a little
-// (a tilt moves the far centroid, not the near one) are no step.
-double step_offset_m(const FittedPlane& a, const FittedPlane& b) {
-  const float a_off_b = std::abs(b.signed_distance_m(a.centroid_m.data()));
-  const float b_off_a = std::abs(a.signed_distance_m(b.centroid_m.data()));
-  return static_cast<double>(std::min(a_off_b, b_off_a));
-}
-
-}  // namespace
 
 StepPairs find_step_pairs(const GraphNodes& graph, const TouchingNodes& touching,
                           const StepRule& rule) {
@@ -32,7 +18,7 @@ StepPairs find_step_pairs(const GraphNodes& graph, const TouchingNodes& touching
       const GraphNode& b = graph.nodes[static_cast<std::size_t>(j)];
       if (b.segment < 0 || !b.planar) continue;
       if (normal_cosine(a.plane, b.plane) < min_cos) continue;
-      if (step_offset_m(a.plane, b.plane) < rule.min_offset_m) continue;
+      if (smaller_centroid_offset_m(a.plane, b.plane) < rule.min_offset_m) continue;
       pairs.emplace_back(static_cast<std::int32_t>(i), j);
     }
   }

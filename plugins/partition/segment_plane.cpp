@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace facet::partition {
 
@@ -94,10 +95,24 @@ double normal_cosine(const FittedPlane& a, const FittedPlane& b) {
                              a.normal[2] * b.normal[2]);
 }
 
+namespace {
+
+// Each centroid's distance from the other's plane.
+std::pair<float, float> centroid_offsets_m(const FittedPlane& a, const FittedPlane& b) {
+  return {std::abs(b.signed_distance_m(a.centroid_m.data())),
+          std::abs(a.signed_distance_m(b.centroid_m.data()))};
+}
+
+}  // namespace
+
 double centroid_offset_m(const FittedPlane& a, const FittedPlane& b) {
-  const float a_off_b = std::abs(b.signed_distance_m(a.centroid_m.data()));
-  const float b_off_a = std::abs(a.signed_distance_m(b.centroid_m.data()));
+  const auto [a_off_b, b_off_a] = centroid_offsets_m(a, b);
   return static_cast<double>(std::max(a_off_b, b_off_a));
+}
+
+double smaller_centroid_offset_m(const FittedPlane& a, const FittedPlane& b) {
+  const auto [a_off_b, b_off_a] = centroid_offsets_m(a, b);
+  return static_cast<double>(std::min(a_off_b, b_off_a));
 }
 
 }  // namespace facet::partition

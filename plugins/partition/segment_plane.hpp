@@ -56,4 +56,9 @@ double normal_cosine(const FittedPlane& a, const FittedPlane& b);
 // angle, how far two planes are from being one.
 double centroid_offset_m(const FittedPlane& a, const FittedPlane& b);
 
+// The smaller of the two: how far both stand off the other's plane. Two pieces of one face
+// whose fitted normals differ a little are close by it (a tilt moves the far centroid off the
+// other's plane, not the near one); two parallel faces a step apart are not.
+double smaller_centroid_offset_m(const FittedPlane& a, const FittedPlane& b);
+
 }  // namespace facet::partition
