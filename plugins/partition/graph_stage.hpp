@@ -14,6 +14,7 @@
 #include "partition/graph_edges.hpp"
 #include "partition/graph_front_bodies.hpp"
 #include "partition/graph_nodes.hpp"
+#include "partition/graph_span_split.hpp"
 #include "partition/graph_steps.hpp"
 
 namespace facet::partition {
@@ -29,6 +30,7 @@ struct GraphRule {
   bool floor = true;
   FloorRule floor_rule;
   StepRule steps;
+  SpanSplitRule span_split;
   CutRule cut;
 };
 
@@ -65,6 +67,7 @@ class PartitionGraph final : public Stage {
   GraphCut cut_;
   std::vector<GraphEdge> edges_;
   std::vector<std::int32_t> node_of_patch_;
+  std::vector<std::int32_t> split_of_node_;
 };
 
 }  // namespace facet::partition

@@ -538,6 +538,47 @@ TEST(PartitionGraph, BoxesSideBySideOneSetBackAreTwoObjects) {
   EXPECT_EQ(run_graph(input, off).count, 1);
 }
 
+// Two boxes side by side with their fronts flush, one 2 cm taller: the tops are a step pair,
+// and the fronts, which a real sensor sees as one surface across the seam, are made one patch
+// here. The front meets each top along its side, so it is parted by the plane through the
+// tops' seam.
+TEST(PartitionGraph, AFlushFrontOfTwoBoxesOfTwoHeightsIsParted) {
+  Tabletop t;
+  t.box(-0.06, 0.0, {0.06, 0.05, 0.05}).box(0.06, 0.0, {0.06, 0.05, 0.04});
+  const TableScene s = on_table(t);
+  PartitionInput input = graph_input(s.scene, s.table);
+  ASSERT_EQ(count_of(input.blobs), 1);
+  // The fronts are the two patches whose pixels lie lowest in the image, one per box.
+  std::map<std::int32_t, std::array<double, 2>> rows;  // patch -> (sum v, pixels)
+  for (int v = 0; v < input.patches.labels.rows; ++v) {
+    for (int u = 0; u < input.patches.labels.cols; ++u) {
+      const std::int32_t patch = input.patches.labels.at<std::int32_t>(v, u);
+      if (patch == 0 || s.scene.object.at<std::int32_t>(v, u) == s.table) continue;
+      rows[patch][0] += v;
+      rows[patch][1] += 1;
+    }
+  }
+  ASSERT_EQ(rows.size(), 4U);  // a top and a front per box
+  std::vector<std::pair<double, std::int32_t>> by_row;
+  for (const auto& [patch, sum] : rows)
+    by_row.emplace_back(sum[0] / sum[1], patch);
+  std::sort(by_row.begin(), by_row.end());
+  const std::int32_t front = by_row[2].second;
+  input.patches.labels.setTo(front, input.patches.labels == by_row[3].second);
+  input.adjacency = contacts_of(input.patches.labels);
+
+  std::vector<Metric> metrics;
+  const LabelImage objects = run_graph(input, {}, &metrics);
+  EXPECT_EQ(metric_value(metrics, "step_pairs"), 1.0);
+  EXPECT_EQ(metric_value(metrics, "split_faces"), 1.0);
+  EXPECT_EQ(objects.count, 2);
+  EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table)));
+  // Without the split the front goes whole to one box.
+  const LabelImage whole = run_graph(input, {{"step_split_faces", false}});
+  EXPECT_EQ(whole.count, 2);
+  EXPECT_FALSE(matches_bodies(whole, bodies_without(s.scene, s.table)));
+}
+
 TEST(PartitionGraph, ConvexFeatureOffLeavesEveryFaceApart) {
   const PartitionInput input = single_box();
   EXPECT_EQ(run_graph(input).count, 1);
