@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace facet::partition {
 
@@ -125,21 +126,22 @@ std::vector<SpanSplit> find_span_splits(const BlobSegments& points, const GraphN
       if (across.norm() < 0.5) continue;  // the seam runs along the normal: no such plane
       const Eigen::Vector3f side_normal = across.normalized().cast<float>();
       const auto offset = static_cast<float>(-across.normalized().dot(seam->centroid));
-      const float side_a = side_normal.dot(node_a.plane.centroid_m) + offset;
-      const float side_b = side_normal.dot(node_b.plane.centroid_m) + offset;
-      if ((side_a >= 0.0F) == (side_b >= 0.0F)) continue;
+      const Eigen::Vector3f& centroid_a = node_a.plane.centroid_m;
+      const Eigen::Vector3f& centroid_b = node_b.plane.centroid_m;
+      SpanSplit parts{face, side_normal, offset, group_a, group_b};
+      const bool a_in_front = parts.in_front(centroid_a.x(), centroid_a.y(), centroid_a.z());
+      if (a_in_front == parts.in_front(centroid_b.x(), centroid_b.y(), centroid_b.z())) continue;
+      if (!a_in_front) std::swap(parts.group_in_front, parts.group_behind);
       const Segment& segment = points.segments[static_cast<std::size_t>(node.segment)];
       std::int32_t in_front = 0;
       for (std::int32_t k = segment.begin; k < segment.end; ++k) {
         const auto i = static_cast<std::size_t>(k);
-        const Eigen::Vector3f p(points.x[i], points.y[i], points.z[i]);
-        if (side_normal.dot(p) + offset >= 0.0F) ++in_front;
+        if (parts.in_front(points.x[i], points.y[i], points.z[i])) ++in_front;
       }
       const double share_in_front =
           static_cast<double>(in_front) / static_cast<double>(std::max(segment.size(), 1));
       if (std::min(share_in_front, 1.0 - share_in_front) < rule.min_side_share) continue;
-      splits.push_back({face, side_normal, offset, side_a >= 0.0F ? group_a : group_b,
-                        side_a >= 0.0F ? group_b : group_a});
+      splits.push_back(parts);
       split[static_cast<std::size_t>(face)] = 1;
     }
   }

@@ -40,6 +40,14 @@ struct SpanSplit {
   float offset_m = 0.0F;  // the plane is normal . x + offset_m = 0
   std::int32_t group_in_front = 0;
   std::int32_t group_behind = 0;
+
+  bool in_front(float x, float y, float z) const {
+    return normal.x() * x + normal.y() * y + normal.z() * z + offset_m >= 0.0F;
+  }
+  // The group of the node's point (x, y, z), metres.
+  std::int32_t group_at(float x, float y, float z) const {
+    return in_front(x, y, z) ? group_in_front : group_behind;
+  }
 };
 
 // The splits of the faces that span a step pair whose two faces are in two groups. `group` is

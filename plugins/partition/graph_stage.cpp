@@ -538,11 +538,8 @@ void PartitionGraph::process(ProcessContext& ctx) {
       const std::int32_t pixel = segments_.pixel[point];
       labels[pixel] = id;
       if (split >= 0) {
-        const SpanSplit& parts = splits[static_cast<std::size_t>(split)];
-        const float side = parts.normal.x() * segments_.x[point] +
-                           parts.normal.y() * segments_.y[point] +
-                           parts.normal.z() * segments_.z[point] + parts.offset_m;
-        labels[pixel] = 1 + (side >= 0.0F ? parts.group_in_front : parts.group_behind);
+        labels[pixel] = 1 + splits[static_cast<std::size_t>(split)].group_at(
+                                segments_.x[point], segments_.y[point], segments_.z[point]);
       }
       if (cores) node_of[pixel] = i;
     }
