@@ -6,6 +6,17 @@
 
 namespace facet::partition {
 
+namespace {
+
+// An edge between two distinct nodes of 0 .. node_count - 1; others are ignored.
+bool joins_two_nodes(const GraphEdge& edge, std::size_t node_count) {
+  return edge.a != edge.b && edge.a >= 0 && edge.b >= 0 &&
+         static_cast<std::size_t>(edge.a) < node_count &&
+         static_cast<std::size_t>(edge.b) < node_count;
+}
+
+}  // namespace
+
 const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
                                                   std::span<const GraphEdge> edges,
                                                   const CutRule& rule, const StepPairs& steps) {
@@ -14,10 +25,7 @@ const std::vector<std::int32_t>& GraphCut::groups(std::int32_t node_count,
   neighbours_.assign(n, {});
   local_.assign(n, -1);
   for (const GraphEdge& edge : edges) {
-    if (edge.a == edge.b || edge.a < 0 || edge.b < 0 || edge.a >= node_count ||
-        edge.b >= node_count) {
-      continue;
-    }
+    if (!joins_two_nodes(edge, n)) continue;
     neighbours_[static_cast<std::size_t>(edge.a)].push_back(edge.b);
     neighbours_[static_cast<std::size_t>(edge.b)].push_back(edge.a);
     groups_joined_.unite(edge.a, edge.b);
@@ -99,9 +107,7 @@ void GraphCut::separate_steps(std::span<const GraphEdge> edges, const StepPairs&
   // deterministic. An edge within a group has both ends in it.
   std::vector<GraphEdge> order;
   for (const GraphEdge& edge : edges) {
-    if (edge.a >= 0 && edge.b >= 0 && static_cast<std::size_t>(edge.a) < group_.size() &&
-        static_cast<std::size_t>(edge.b) < group_.size() && edge.a != edge.b &&
-        in_joined_group(edge.a) &&
+    if (joins_two_nodes(edge, group_.size()) && in_joined_group(edge.a) &&
         group_[static_cast<std::size_t>(edge.a)] == group_[static_cast<std::size_t>(edge.b)]) {
       order.push_back(edge);
     }

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "partition/blob_segments.hpp"
-#include "partition/convex_merge.hpp"
 #include "partition/graph_edges.hpp"
 #include "partition/graph_nodes.hpp"
 #include "partition/graph_steps.hpp"

@@ -536,11 +536,10 @@ void PartitionGraph::process(ProcessContext& ctx) {
     for (std::int32_t k = segment.begin; k < segment.end; ++k) {
       const auto point = static_cast<std::size_t>(k);
       const std::int32_t pixel = segments_.pixel[point];
-      labels[pixel] = id;
-      if (split >= 0) {
-        labels[pixel] = 1 + splits[static_cast<std::size_t>(split)].group_at(
-                                segments_.x[point], segments_.y[point], segments_.z[point]);
-      }
+      labels[pixel] = split < 0
+                          ? id
+                          : 1 + splits[static_cast<std::size_t>(split)].group_at(
+                                    segments_.x[point], segments_.y[point], segments_.z[point]);
       if (cores) node_of[pixel] = i;
     }
   }
