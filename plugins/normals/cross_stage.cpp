@@ -56,10 +56,11 @@ const Param<int> kAutoSmoothMaxRadius{
     0,
     "Automatic smoothing for sensors noisier than a Kinect. Noise and creases both make "
     "neighbouring normals (3 px apart, along rows and columns) differ by more than the edge "
-    "filter's angle (31.8 deg, acos 0.85); a box average removes the disagreement of noise and "
-    "keeps that of creases. While averaging with one more radius would make at least "
-    "auto_smooth_min_gain of the pairs agree, the radius grows, up to this one; the normals are "
-    "then box-averaged and renormalised with it. Frames as noisy as the defaults were chosen on, "
+    "filter's angle (auto_smooth_edge_threshold: 31.8 deg at 0.85); a box average removes the "
+    "disagreement of noise and keeps that of creases. While averaging with one more radius "
+    "would make at least auto_smooth_min_gain of the pairs agree, the radius grows, up to this "
+    "one; the normals are then box-averaged and renormalised with it. Frames as noisy as the "
+    "defaults were chosen on, "
     "and scenes full of creases, stay unsmoothed. Only with smooth_radius 0. 0 = off.",
     {.unit = "px",
      .min = 0.0,
@@ -77,6 +78,17 @@ const Param<double> kAutoSmoothMinGain{
                "Kinect's noise and 0.063 on the mOSD frames, 0.131 and more at 1.5x the noise, "
                "0.197 and more at 2x; 0.125 keeps every Kinect frame unsmoothed (0.11 smooths one) "
                "and smooths the noisier ones as 0.10 does (docs/normals.md)"}};
+const Param<double> kAutoSmoothEdgeThreshold{
+    "auto_smooth_edge_threshold",
+    0.85,
+    "See auto_smooth_max_radius: the edge filter's threshold (the cosine of its angle) the pairs "
+    "of normals are measured against. Set it to the edges stage's threshold: a stricter edge "
+    "filter (a larger threshold) takes smaller disagreements for creases, so it needs the "
+    "normals smoothed at less noise.",
+    {.min = 0.0,
+     .max = 1.0,
+     .origin = "edges.max's threshold in graphs/tabletop.yaml, which passes its graph parameter "
+               "edge_threshold to both (docs/normals.md)"}};
 const Param<bool> kRenormalize{
     "renormalize",
     false,
@@ -101,7 +113,7 @@ StageSpec CrossStage::spec() {
       "for the edge filter is smoothed, as little as suffices.");
   return spec
       .declare(kDepth, kNormals, kDepthSpaceParams, kRadius, kTriangle, kHoles, kSmoothRadius,
-               kRenormalize, kAutoSmoothMaxRadius, kAutoSmoothMinGain)
+               kRenormalize, kAutoSmoothMaxRadius, kAutoSmoothMinGain, kAutoSmoothEdgeThreshold)
       .concurrency(Concurrency::clonable);
 }
 
@@ -111,7 +123,8 @@ CrossStage::CrossStage(const Params& params)
       smooth_radius_px_(kSmoothRadius(params)),
       smoother_(smooth_radius_px_, kRenormalize(params)),
       auto_max_radius_px_(kAutoSmoothMaxRadius(params)),
-      auto_min_gain_(kAutoSmoothMinGain(params)) {
+      auto_min_gain_(kAutoSmoothMinGain(params)),
+      noisy_pairs_{.edge_threshold = kAutoSmoothEdgeThreshold(params)} {
   if (auto_max_radius_px_ > 0 && smooth_radius_px_ > 0) {
     throw StageError("smooth_radius " + std::to_string(smooth_radius_px_) +
                      " smooths every frame, auto_smooth_max_radius " +
@@ -147,7 +160,7 @@ void CrossStage::process(ProcessContext& ctx) {
 // than disagree, so a share below the least gain ends the search without averaging: a frame that
 // needs no smoothing costs one look at 1/16 of its normals.
 void CrossStage::smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals) {
-  const NoisyPairRule rule;
+  const NoisyPairRule& rule = noisy_pairs_;
   const double raw_share = noisy_pair_share(normals, rule);
   double share = raw_share;
   int radius_px = 0;
@@ -170,7 +183,7 @@ void CrossStage::smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals) {
 // a warning depends on it, so the shares are looked at on every 8th row and column. The average
 // goes to the scratch of radius 1: at the largest radius it holds no image still needed.
 void CrossStage::warn_if_still_noisy(ProcessContext& ctx, const cv::Mat& smoothed) {
-  NoisyPairRule coarse;
+  NoisyPairRule coarse = noisy_pairs_;
   coarse.stride_px *= 2;
   cv::Mat& again = smoothed_.front();
   auto_smoothers_.front().apply(smoothed, again);

@@ -7,6 +7,7 @@
 #include "facet/stage.hpp"
 #include "normals/cross_kernel.hpp"
 #include "normals/depth_space.hpp"
+#include "normals/normal_noise.hpp"
 #include "normals/normal_smoothing.hpp"
 
 namespace facet::normals {
@@ -27,6 +28,7 @@ class CrossStage final : public Stage {
   NormalSmoother smoother_;
   int auto_max_radius_px_;
   double auto_min_gain_;
+  NoisyPairRule noisy_pairs_;                   // measured against the edge filter's angle
   std::vector<NormalSmoother> auto_smoothers_;  // radius 1, 2, ... (renormalised)
   // Per-frame scratch kept between frames, so a stream allocates only the output images.
   cv::Mat z_;

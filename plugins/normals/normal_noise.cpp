@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 
 namespace facet::normals {
 namespace {
@@ -28,8 +27,7 @@ struct PairTest {
 double noisy_pair_share(const cv::Mat& normals, const NoisyPairRule& rule) {
   CV_Assert(normals.type() == CV_32FC3);
   PairTest test;
-  const double min_cos = std::cos(rule.angle_deg * std::numbers::pi / 180.0);
-  test.min_cos_squared = static_cast<float>(min_cos * min_cos);
+  test.min_cos_squared = static_cast<float>(rule.edge_threshold * rule.edge_threshold);
   const int step = rule.step_px;
   for (int v = 0; v + step < normals.rows; v += rule.stride_px) {
     const auto* row = normals.ptr<float>(v);

@@ -5,19 +5,19 @@
 // more than its angle. On a sensor noisier than the one the defaults were chosen on, that happens
 // all over flat surfaces: patches shrink to nothing and the table is not found. The measure is
 // the share of pixel pairs, `step_px` apart along the rows and along the columns, whose normals
-// differ by more than `angle_deg`, taken of the normals as they are or box-averaged over a
-// radius (NormalSmoother). Creases and noise both make such pairs; averaging removes those of noise
-// and keeps those of creases, so what one more radius of averaging removes tells how noisy the
-// normals are, however many creases the scene has.
+// differ by more than the edge filter's angle (|cosine| below `edge_threshold`), taken of the
+// normals as they are or box-averaged over a radius (NormalSmoother). Creases and noise both make
+// such pairs; averaging removes those of noise and keeps those of creases, so what one more radius
+// of averaging removes tells how noisy the normals are, however many creases the scene has.
 
 #include <opencv2/core/mat.hpp>
 
 namespace facet::normals {
 
 struct NoisyPairRule {
-  int step_px = 3;          // the distance of the pair: the edge filter's reach
-  double angle_deg = 31.8;  // the edge filter's angle: acos(0.85)
-  int stride_px = 4;        // every n-th row and column is looked at: 1/16 of the pixels
+  int step_px = 3;               // the distance of the pair: the edge filter's reach
+  double edge_threshold = 0.85;  // the edge filter's: a pair disagrees below this |cosine|
+  int stride_px = 4;             // every n-th row and column is looked at: 1/16 of the pixels
 };
 
 // normals: CV_32FC3 (NaN = none; normals shorter than 1, as smoothing without renormalisation

@@ -77,9 +77,11 @@ struct AutoRun {
   std::size_t warnings = 0;
 };
 
-AutoRun run_auto(const facet::DepthImage& depth, std::int64_t max_radius_px) {
-  facet::testing::StageRunner<CrossStage> runner(
-      {{"auto_smooth_max_radius", max_radius_px}, {"image_depth", std::string("mm")}});
+AutoRun run_auto(const facet::DepthImage& depth, std::int64_t max_radius_px,
+                 double edge_threshold = 0.85) {
+  facet::testing::StageRunner<CrossStage> runner({{"auto_smooth_max_radius", max_radius_px},
+                                                  {"auto_smooth_edge_threshold", edge_threshold},
+                                                  {"image_depth", std::string("mm")}});
   runner.set_input("depth", facet::Packet::make(depth));
   runner.run();
   return {runner.output<facet::NormalImage>("normals").normals.clone(),
@@ -157,6 +159,21 @@ TEST(CrossAutoSmooth, WarnsWhenTheLargestRadiusIsNotEnough) {
   EXPECT_EQ(capped.radius_px, 1.0);
   EXPECT_TRUE(same_normals(capped.normals, run_fixed(depth, 1)));
   EXPECT_EQ(capped.warnings, 1u);
+}
+
+// The angle is the edge filter's: a stricter filter (a larger threshold) takes smaller
+// disagreements for creases, so the same frame measures noisier and is smoothed where the
+// paper's threshold leaves it as it is.
+TEST(CrossAutoSmooth, MeasuresAgainstTheEdgeFiltersThreshold) {
+  const facet::DepthImage depth = noisy_plane(1.0, 2);
+  const AutoRun paper = run_auto(depth, 2);
+  const AutoRun strict = run_auto(depth, 2, 0.97);
+  EXPECT_EQ(paper.radius_px, 0.0);
+  EXPECT_GE(strict.radius_px, 1.0);
+  EXPECT_DOUBLE_EQ(paper.share, noisy_pair_share(run_fixed(depth, 0), NoisyPairRule{}));
+  EXPECT_DOUBLE_EQ(strict.share,
+                   noisy_pair_share(run_fixed(depth, 0), NoisyPairRule{.edge_threshold = 0.97}));
+  EXPECT_GT(strict.share, paper.share + 0.125);
 }
 
 // Averaged normals need not be renormalised to be measured: the mean of unit vectors is shorter
