@@ -60,8 +60,8 @@ const Param<int> kAutoSmoothMaxRadius{
     "disagreement of noise and keeps that of creases. While averaging with one more radius "
     "would make at least auto_smooth_min_gain of the pairs agree, the radius grows, up to this "
     "one; the normals are then box-averaged and renormalised with it. Frames as noisy as the "
-    "defaults were chosen on, "
-    "and scenes full of creases, stay unsmoothed. Only with smooth_radius 0. 0 = off.",
+    "defaults were chosen on, and scenes full of creases, stay unsmoothed. Only with "
+    "smooth_radius 0. 0 = off.",
     {.unit = "px",
      .min = 0.0,
      .max = 8.0,
@@ -160,14 +160,13 @@ void CrossStage::process(ProcessContext& ctx) {
 // than disagree, so a share below the least gain ends the search without averaging: a frame that
 // needs no smoothing costs one look at 1/16 of its normals.
 void CrossStage::smooth_if_noisy(ProcessContext& ctx, cv::Mat& normals) {
-  const NoisyPairRule& rule = noisy_pairs_;
-  const double raw_share = noisy_pair_share(normals, rule);
+  const double raw_share = noisy_pair_share(normals, noisy_pairs_);
   double share = raw_share;
   int radius_px = 0;
   while (radius_px < auto_max_radius_px_ && share >= auto_min_gain_) {
     const auto next = static_cast<std::size_t>(radius_px);
     auto_smoothers_[next].apply(normals, smoothed_[next]);
-    const double next_share = noisy_pair_share(smoothed_[next], rule);
+    const double next_share = noisy_pair_share(smoothed_[next], noisy_pairs_);
     if (share - next_share < auto_min_gain_) break;
     ++radius_px;
     share = next_share;
