@@ -170,7 +170,8 @@ int compare(const CompareArgs& args) {
   struct Request {
     std::string name;
     std::string file_variant;  // applied from the graph file; empty for none
-    std::vector<std::pair<std::string, std::string>> sets;
+    std::vector<std::pair<std::string, std::string>> sets;    // node.param -> value
+    std::vector<std::pair<std::string, std::string>> params;  // graph parameter -> value
   };
   std::vector<Request> requests;
   PreparedSweep sweep;
@@ -183,7 +184,7 @@ int compare(const CompareArgs& args) {
     sweep = prepare_sweep(args.sweeps, args.graph_file, base_options, args.variant, registry);
     if (sweep.exit_code != kOk) return sweep.exit_code;
     for (const auto& point : sweep.points)
-      requests.push_back({point.name, args.variant, point.sets});
+      requests.push_back({point.name, args.variant, point.sets, point.params});
   } else if (!args.variant.empty()) {
     std::cerr << "error: --variant " << args.variant
               << " selects where a --sweep starts; to compare variants, list them with "
@@ -201,7 +202,7 @@ int compare(const CompareArgs& args) {
       const bool is_base =
           name == kBaseVariant &&
           std::find(base.variants.begin(), base.variants.end(), name) == base.variants.end();
-      requests.push_back({name, is_base ? "" : name, {}});
+      requests.push_back({name, is_base ? "" : name, {}, {}});
     }
   }
   if (names.empty()) {
@@ -225,6 +226,8 @@ int compare(const CompareArgs& args) {
     LoadOptions options = written_options;
     options.variant = request.file_variant;
     options.sets.insert(options.sets.end(), request.sets.begin(), request.sets.end());
+    for (const auto& [param, value] : request.params)
+      options.params[param] = value;
     GraphSpec spec = load_graph_file(args.graph_file, options, diagnostics);
     Diagnostics written_diagnostics;  // the same file, its problems are reported above
     variant_changes.push_back(describe_changes(
@@ -363,12 +366,14 @@ void add_compare_command(CLI::App& app, int& exit_code, std::string command_line
                       "variant); default: every variant of the file");
   command->add_option("--sweep", args->sweeps,
                       "Compare the points of a parameter sweep instead of variants: "
-                      "node.param=start:stop:step (values start + i*step up to stop; repeatable: "
-                      "a grid over every combination, at most 200 points). Each point is a "
-                      "variant named node.param=value; OUT/sweep_<node.param>.svg plots every "
-                      "score against each parameter. A bad sweep (range, step, unknown or "
-                      "non-numeric parameter, value out of range) exits 2. Example: --sweep "
-                      "edges.threshold=0.80:0.90:0.01");
+                      "node.param=start:stop:step, or param=start:stop:step for a graph "
+                      "parameter, which moves every node parameter written with its ${param} "
+                      "(values start + i*step up to stop; repeatable: a grid over every "
+                      "combination, at most 200 points). Each point is a variant named "
+                      "node.param=value; OUT/sweep_<node.param>.svg plots every score against "
+                      "each parameter. A bad sweep (range, step, unknown or non-numeric "
+                      "parameter, value out of range) exits 2. Examples: --sweep "
+                      "edges.threshold=0.80:0.90:0.01, --sweep edge_threshold=0.80:0.90:0.01");
   command->add_option("--variant", args->variant,
                       "With --sweep: the graph file's variant the sweep starts from (default: "
                       "the graph as written)");

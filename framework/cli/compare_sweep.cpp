@@ -35,7 +35,7 @@ PreparedSweep prepare_sweep(const std::vector<std::string>& sweep_options,
     sweep.exit_code = kInvalidGraph;
     return sweep;
   }
-  check_sweep_axes(sweep.axes, graph, registry, options.sets, diagnostics);
+  check_sweep_axes(sweep.axes, graph, registry, options, diagnostics);
   if (diagnostics.has_errors()) {
     diagnostics.print(std::cerr);
     sweep.exit_code = kUsage;

@@ -40,7 +40,8 @@ void add_view_node(GraphSpec& graph, Diagnostics& diagnostics) {
   view.stage_where = option;
   view.inputs = {{"depth", depth->node, depth->port, option},
                  {"labels", labels->node, labels->port, option}};
-  view.params = {{"title", "facet run " + graph.name, option, true}};
+  const std::string title = "facet run " + graph.name;
+  view.params = {{"title", title, option, true, title}};
   graph.nodes.push_back(std::move(view));
 }
 

@@ -21,11 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::absolute_dir_of;
+using detail::kGraphDirParam;
 using detail::ParamSubstitution;
 using detail::RawGraph;
 using detail::RawNode;
-
-constexpr const char* kGraphDirParam = "graph_dir";
 
 SourceLocation command_line() {
   return {kCommandLineFile, 0, 0};
@@ -137,7 +136,7 @@ void apply_command_line_sets(RawGraph& raw, const LoadOptions& options, Diagnost
                             detail::suggestion_suffix(target->first, raw.node_ids(), ""));
       continue;
     }
-    detail::set_param(*node, {target->second, value, command_line(), true});
+    detail::set_param(*node, {target->second, value, command_line(), true, value});
   }
 }
 
@@ -181,7 +180,8 @@ NodeSpec resolve_node(const RawNode& raw, const ParamSubstitution& substitution,
   }
   for (const auto& param : raw.params) {
     auto text = substitution.expand(param.text, param.where, diagnostics);
-    node.params.push_back({param.name, text.value_or(param.text), param.where, text.has_value()});
+    node.params.push_back(
+        {param.name, text.value_or(param.text), param.where, text.has_value(), param.text});
   }
   return node;
 }

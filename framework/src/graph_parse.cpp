@@ -130,7 +130,7 @@ class DocumentReader {
         continue;
       }
       if (auto text = scalar(item, "parameter " + in_quotes(item.key))) {
-        out.push_back({item.key, text->text, text->where, true});
+        out.push_back({item.key, text->text, text->where, true, text->text});
       }
     }
     return out;
@@ -368,8 +368,9 @@ class DocumentReader {
         continue;
       }
       if (auto text = scalar(item, "parameter " + in_quotes(item.key))) {
-        out.push_back(
-            {target->first, item.key_where, {target->second, text->text, text->where, true}});
+        out.push_back({target->first,
+                       item.key_where,
+                       {target->second, text->text, text->where, true, text->text}});
       }
     }
     return out;

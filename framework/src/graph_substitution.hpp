@@ -9,6 +9,9 @@
 
 namespace facet::detail {
 
+// The built-in parameter: the directory of the graph file.
+inline constexpr const char* kGraphDirParam = "graph_dir";
+
 class ParamSubstitution {
  public:
   explicit ParamSubstitution(std::map<std::string, std::string> values)

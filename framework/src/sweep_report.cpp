@@ -103,7 +103,13 @@ void write_sweep_json(JsonWriter& json, const SweepSummary& sweep) {
   for (const auto& axis : sweep.axes) {
     json.begin_object();
     json.key("name").value(axis.key());
-    json.key("node").value(axis.node);
+    // A graph parameter belongs to no node.
+    json.key("node");
+    if (axis.is_graph_param()) {
+      json.null();
+    } else {
+      json.value(axis.node);
+    }
     json.key("param").value(axis.param);
     json.key("start");
     write_number(json, axis, axis.start);

@@ -57,26 +57,32 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
   return parts;
 }
 
+constexpr std::string_view kExpected =
+    "expected node.param=start:stop:step or param=start:stop:step";
+
 }  // namespace
 
 std::variant<SweepAxis, std::string> parse_sweep_axis(std::string_view option) {
   const std::string prefix = "--sweep " + std::string(option) + ": ";
   const auto fail = [&](const std::string& why) { return prefix + why; };
   const auto eq = option.find('=');
-  if (eq == std::string_view::npos) return fail("expected node.param=start:stop:step");
+  if (eq == std::string_view::npos) return fail(std::string(kExpected));
   const std::string_view target = option.substr(0, eq);
   const auto dot = target.find('.');
-  if (dot == std::string_view::npos || !detail::is_identifier(target.substr(0, dot)) ||
-      !detail::is_identifier(target.substr(dot + 1))) {
-    return fail(fmt::format("'{}' is not node.param", target));
+  // No dot: a graph parameter, checked against the graph's `params:` later.
+  const std::string_view node = dot == std::string_view::npos ? "" : target.substr(0, dot);
+  const std::string_view param = dot == std::string_view::npos ? target : target.substr(dot + 1);
+  if ((dot != std::string_view::npos && !detail::is_identifier(node)) ||
+      !detail::is_identifier(param)) {
+    return fail(fmt::format("'{}' is neither node.param nor a graph parameter's name", target));
   }
   const auto range = split(option.substr(eq + 1), ':');
-  if (range.size() != 3) return fail("expected node.param=start:stop:step after the '='");
+  if (range.size() != 3) return fail("expected start:stop:step after the '='");
 
   SweepAxis axis;
   axis.option = std::string(option);
-  axis.node = std::string(target.substr(0, dot));
-  axis.param = std::string(target.substr(dot + 1));
+  axis.node = std::string(node);
+  axis.param = std::string(param);
   double* const bounds[] = {&axis.start, &axis.stop, &axis.step};
   const char* const names[] = {"start", "stop", "step"};
   axis.integral = true;
@@ -130,7 +136,8 @@ std::vector<SweepPoint> expand_sweep_grid(const std::vector<SweepAxis>& axes) {
       const std::string& text = axes[a].texts[index[a]];
       if (a > 0) point.name += ',';
       point.name += axes[a].key() + "=" + text;
-      point.sets.emplace_back(axes[a].key(), text);
+      auto& assignments = axes[a].is_graph_param() ? point.params : point.sets;
+      assignments.emplace_back(axes[a].key(), text);
     }
     points.push_back(std::move(point));
     // Odometer: the last axis turns fastest.

@@ -223,6 +223,86 @@ struct BadSweep {
   std::string message;
 };
 
+// Two probes whose gain is one graph parameter, as graphs/tabletop.yaml's edge_threshold feeds
+// both the edge filter and the normals' noise measure.
+void write_graph_param_graph(const fs::path& file) {
+  std::ofstream(file) << "facet: 1\nname: shared_gain\nparams: {output: out/probe, gain: 0.5}\n"
+                      << "nodes:\n  source: {stage: io.frames, params: {path: "
+                      << shell_quote((source_dir() / "data/mosd").string()) << "}}\n"
+                      << "  probe: {stage: test.sweep_probe, in: {depth: source.depth}, params: "
+                         "{gain: \"${gain}\"}}\n"
+                      << "  second: {stage: test.sweep_probe, in: {depth: probe.depth}, params: "
+                         "{gain: \"${gain}\", count: 4}}\n"
+                      << "  write: {stage: io.depth, in: {depth: second.depth}, params: {dir: "
+                         "\"${output}/depth\"}}\n";
+}
+
+double node_metric_mean(const std::string& block, const std::string& node,
+                        const std::string& metric) {
+  const std::regex pattern("\"node\": \"" + node + "\",\\s*\"name\": \"" + metric +
+                           "\",\\s*\"count\": 2,\\s*\"mean\": ([0-9.e+-]+)");
+  std::smatch match;
+  if (!std::regex_search(block, match, pattern)) return -1.0;
+  return std::stod(match[1].str());
+}
+
+TEST(CompareSweepGraphParam, MovesEveryNodeParameterWrittenWithIt) {
+  TempDir dir("facet-sweep");
+  write_graph_param_graph(dir / "shared.yaml");
+  const auto result =
+      compare_probe(dir / "shared.yaml", "--sweep gain=0.2:0.4:0.1 --images 0", dir / "out");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const std::string json = read_file(dir / "out" / "compare.json");
+  for (const char* text : {"0.2", "0.3", "0.4"}) {
+    const std::string block = variant_block(json, std::string("gain=") + text);
+    ASSERT_FALSE(block.empty()) << text << "\n" << json.substr(0, 1000);
+    EXPECT_DOUBLE_EQ(node_metric_mean(block, "probe", "gain"), std::stod(text)) << text;
+    EXPECT_DOUBLE_EQ(node_metric_mean(block, "second", "gain"), std::stod(text)) << text;
+    EXPECT_DOUBLE_EQ(node_metric_mean(block, "second", "count"), 4.0) << text;
+  }
+  EXPECT_TRUE(std::regex_search(
+      json, std::regex(R"re("name": "gain",\s*"node": null,\s*"param": "gain")re")))
+      << json.substr(json.rfind("\"sweep\""));
+  EXPECT_TRUE(fs::exists(dir / "out" / "sweep_gain.svg"));
+}
+
+TEST(CompareSweepGraphParam, ASetNodeParameterIsNoLongerMoved) {
+  TempDir dir("facet-sweep");
+  write_graph_param_graph(dir / "shared.yaml");
+  // --set takes probe's gain from the graph parameter; the sweep still moves second's.
+  const auto result = compare_probe(
+      dir / "shared.yaml", "--set probe.gain=0.9 --sweep gain=0.2:0.3:0.1 --images 0", dir / "out");
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const std::string json = read_file(dir / "out" / "compare.json");
+  const std::string block = variant_block(json, "gain=0.3");
+  EXPECT_DOUBLE_EQ(node_metric_mean(block, "probe", "gain"), 0.9);
+  EXPECT_DOUBLE_EQ(node_metric_mean(block, "second", "gain"), 0.3);
+}
+
+TEST(CompareSweepGraphParam, BadSweepsSayWhatIsWrong) {
+  TempDir dir("facet-sweep");
+  write_graph_param_graph(dir / "shared.yaml");
+  const std::vector<BadSweep> cases = {
+      {"--sweep gian=0:1:0.5", 2,
+       "'gian' is no node.param and no graph parameter; did you mean "
+       "'gain'?"},
+      {"--sweep gain=0.5:1.5:0.5", 2,
+       "graph parameter 'gain' sets parameter 'gain' of node 'probe' (real): value 1.5 is out of "
+       "range [0.0, 1.0]"},
+      {"--sweep gain=0:1:0.5 --param gain=0.1", 2, "'gain' is also given by --param gain=0.1"},
+      {"--sweep gain=0:1:0.5 --sweep second.gain=0:1:0.5", 2,
+       "it sets second.gain, which --sweep second.gain=0:1:0.5 sweeps too"},
+      {"--sweep output=1:2:1", 2,
+       "graph parameter 'output' sets parameter 'dir' of node 'write' (string) is not numeric"},
+  };
+  for (const auto& bad : cases) {
+    const auto result = compare_probe(dir / "shared.yaml", bad.options, dir / "out");
+    EXPECT_EQ(result.exit_code, bad.exit_code) << bad.options << "\n" << result.out;
+    EXPECT_NE(result.out.find(bad.message), std::string::npos) << bad.options << "\n" << result.out;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(CompareSweepErrors, SayWhatIsWrong) {
   TempDir dir("facet-sweep");
   write_probe_graph(dir / "probe.yaml");

@@ -5,6 +5,7 @@
 #include <facet/framework/registry.hpp>
 #include <facet/framework/sweep_check.hpp>
 #include <facet/framework/sweep_spec.hpp>
+#include <map>
 
 #include "graph_test_support.hpp"
 #include "test_stages.hpp"
@@ -84,6 +85,16 @@ TEST(SweepSpec, ZeroCrossingIsNotNegativeZero) {
   EXPECT_EQ(axis.texts[0], "-0.3");
 }
 
+TEST(SweepSpec, NameWithoutADotIsAGraphParameter) {
+  const SweepAxis axis = axis_of("edge_threshold=0.80:0.90:0.05");
+  EXPECT_TRUE(axis.is_graph_param());
+  EXPECT_EQ(axis.node, "");
+  EXPECT_EQ(axis.param, "edge_threshold");
+  EXPECT_EQ(axis.key(), "edge_threshold");
+  EXPECT_EQ(axis.texts, (std::vector<std::string>{"0.80", "0.85", "0.90"}));
+  EXPECT_FALSE(axis_of("edges.threshold=0.8:0.9:0.1").is_graph_param());
+}
+
 TEST(SweepSpec, OnePointWhenStartIsStop) {
   EXPECT_EQ(axis_of("a.b=0.5:0.5:0.1").texts, (std::vector<std::string>{"0.5"}));
 }
@@ -95,9 +106,12 @@ TEST(SweepSpec, BadSpecsSayWhatIsWrong) {
   EXPECT_NE(error_of("a.b=0:1:0").find("step must be positive, got 0"), std::string::npos);
   EXPECT_NE(error_of("a.b=0:1:-0.1").find("step must be positive, got -0.1"), std::string::npos);
   EXPECT_NE(error_of("a.b=0:1:0.001").find("1001 points; at most 200"), std::string::npos);
-  EXPECT_NE(error_of("a.b=0:1").find("expected node.param=start:stop:step"), std::string::npos);
+  EXPECT_NE(error_of("a.b=0:1").find("expected start:stop:step after the '='"), std::string::npos);
   EXPECT_NE(error_of("a.b").find("expected node.param=start:stop:step"), std::string::npos);
-  EXPECT_NE(error_of("threshold=0:1:0.1").find("'threshold' is not node.param"), std::string::npos);
+  EXPECT_NE(error_of("a.b.c=0:1:0.1").find("'a.b.c' is neither node.param nor a graph parameter"),
+            std::string::npos);
+  EXPECT_NE(error_of("1st=0:1:0.1").find("is neither node.param nor a graph parameter"),
+            std::string::npos);
   EXPECT_NE(error_of("a.b=0:x:0.1").find("stop 'x' is not a number"), std::string::npos);
   EXPECT_NE(error_of("a.b=0:inf:0.1").find("stop 'inf' is not a number"), std::string::npos);
   EXPECT_NE(error_of("a.b=0:1:0.1abc").find("step '0.1abc' is not a number"), std::string::npos);
@@ -118,6 +132,16 @@ TEST(SweepGrid, FirstAxisVariesSlowest) {
   EXPECT_EQ(points[5].index, (std::vector<std::size_t>{1, 2}));
   EXPECT_EQ(points[4].sets, (std::vector<std::pair<std::string, std::string>>{
                                 {"edges.threshold", "0.9"}, {"planes.distance_m", "0.011"}}));
+}
+
+TEST(SweepGrid, GraphParametersAreGivenAsParamsNotSets) {
+  const auto points =
+      expand_sweep_grid({axis_of("edge_threshold=0.8:0.9:0.1"), axis_of("median.size=3:5:2")});
+  ASSERT_EQ(points.size(), 4u);
+  EXPECT_EQ(points[1].name, "edge_threshold=0.8,median.size=5");
+  using Assignments = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(points[1].params, (Assignments{{"edge_threshold", "0.8"}}));
+  EXPECT_EQ(points[1].sets, (Assignments{{"median.size", "5"}}));
 }
 
 TEST(SweepGrid, OneAxisIsOnePointPerValue) {
@@ -152,12 +176,16 @@ nodes:
   }
 
   std::string check(const std::vector<std::string>& options,
-                    const std::vector<std::pair<std::string, std::string>>& sets = {}) {
+                    const std::vector<std::pair<std::string, std::string>>& sets = {},
+                    const std::map<std::string, std::string>& params = {}) {
+    LoadOptions given;
+    given.sets = sets;
+    given.params = params;
     std::vector<SweepAxis> axes;
     for (const auto& option : options)
       axes.push_back(axis_of(option));
     Diagnostics diagnostics;
-    check_sweep_axes(axes, graph_, registry_, sets, diagnostics);
+    check_sweep_axes(axes, graph_, registry_, given, diagnostics);
     return diagnostics.str();
   }
 
@@ -232,6 +260,62 @@ TEST_F(SweepCheck, EveryBadAxisIsReported) {
   const std::string error = check({"egdes.threshold=0.1:0.2:0.1", "normals.radius=1:5:0.5"});
   EXPECT_NE(error.find("unknown node 'egdes'"), std::string::npos) << error;
   EXPECT_NE(error.find("takes whole numbers"), std::string::npos) << error;
+}
+
+// Graph parameters: checked through the node parameters written with their ${name}.
+class SweepCheckGraphParam : public SweepCheck {
+ protected:
+  SweepCheckGraphParam() {
+    Diagnostics load;
+    graph_ = graph_test::load(R"(facet: 1
+params: {theta: 0.85, radius: 2, folder: /data, unused: 1}
+nodes:
+  source: {stage: io.frames, params: {path: "${folder}"}}
+  median: {stage: filter.median, in: {depth: source.depth}}
+  normals: {stage: normals.cross, in: {depth: median.depth}, params: {radius: "${radius}"}}
+  edges: {stage: edges.angle, in: {normals: normals.normals}, params: {threshold: "${theta}"}}
+)",
+                              load);
+    EXPECT_FALSE(load.has_errors()) << load.str();
+  }
+};
+
+TEST_F(SweepCheckGraphParam, ValuesAreCheckedAgainstTheNodeParametersItSets) {
+  EXPECT_EQ(check({"theta=0.80:0.90:0.05", "radius=1:3:1"}), "");
+  const std::string range = check({"theta=0.5:1.5:0.5"});
+  EXPECT_NE(range.find("--sweep theta=0.5:1.5:0.5: graph parameter 'theta' sets parameter "
+                       "'threshold' of node 'edges' (real): value 1.5 is out of range"),
+            std::string::npos)
+      << range;
+  const std::string whole = check({"radius=1:5:0.5"});
+  EXPECT_NE(whole.find("parameter 'radius' of node 'normals' (int) takes whole numbers"),
+            std::string::npos)
+      << whole;
+  const std::string text = check({"folder=1:2:1"});
+  EXPECT_NE(text.find("sets parameter 'path' of node 'source' (string) is not numeric"),
+            std::string::npos)
+      << text;
+}
+
+TEST_F(SweepCheckGraphParam, UnknownOrUnusedGraphParametersAreRefused) {
+  EXPECT_EQ(check({"thta=0.8:0.9:0.1"}),
+            "<command line>: error: --sweep thta=0.8:0.9:0.1: 'thta' is no node.param and no "
+            "graph parameter; did you mean 'theta'?\n");
+  EXPECT_NE(check({"unused=1:2:1"})
+                .find("graph parameter 'unused' sets no node parameter (none is written with "
+                      "${unused})"),
+            std::string::npos);
+}
+
+TEST_F(SweepCheckGraphParam, ANodeParameterMovedTwiceOrAlsoGivenIsRefused) {
+  const std::string both = check({"theta=0.8:0.9:0.1", "edges.threshold=0.8:0.9:0.1"});
+  EXPECT_NE(both.find("--sweep theta=0.8:0.9:0.1: it sets edges.threshold, which --sweep "
+                      "edges.threshold=0.8:0.9:0.1 sweeps too"),
+            std::string::npos)
+      << both;
+  EXPECT_NE(check({"theta=0.8:0.9:0.1"}, {}, {{"theta", "0.7"}})
+                .find("'theta' is also given by --param theta=0.7"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -23,6 +23,9 @@ struct ParamSetting {
   // False when the loader could not resolve the value (an undefined ${...}) and has said so:
   // validation then counts the parameter as set but does not check it again.
   bool resolved = true;
+  // As written, before substitution: "${edge_threshold}". What a sweep of a graph parameter
+  // looks for to know which node parameters it moves.
+  std::string written;
 };
 
 // `in: {depth: median.depth}` — input port `port` is fed by `from_node`'s output `from_port`.

@@ -1,7 +1,8 @@
 #pragma once
-// `facet compare --sweep node.param=start:stop:step`: one swept parameter (an axis) with its
-// values, and the grid of points that several axes span together. Each point becomes one
-// variant of the comparison.
+// `facet compare --sweep node.param=start:stop:step` (a node's parameter) or
+// `--sweep param=start:stop:step` (a graph parameter, which may feed several nodes): one swept
+// parameter (an axis) with its values, and the grid of points that several axes span together.
+// Each point becomes one variant of the comparison.
 
 #include <cstddef>
 #include <optional>
@@ -18,8 +19,8 @@ inline constexpr std::size_t kMaxSweepPoints = 200;
 
 struct SweepAxis {
   std::string option;  // as given: "edges.threshold=0.80:0.90:0.01"
-  std::string node;    // "edges"
-  std::string param;   // "threshold"
+  std::string node;    // "edges"; empty for a graph parameter
+  std::string param;   // "threshold", or the graph parameter's name: "edge_threshold"
   double start = 0.0;
   double stop = 0.0;
   double step = 0.0;
@@ -32,7 +33,9 @@ struct SweepAxis {
   std::vector<double> values;
   std::vector<std::string> texts;
 
-  std::string key() const { return node + "." + param; }
+  bool is_graph_param() const { return node.empty(); }
+  // "edges.threshold", or "edge_threshold" for a graph parameter.
+  std::string key() const { return is_graph_param() ? param : node + "." + param; }
 };
 
 // Parses one --sweep option; the error names the problem and repeats the option.
@@ -44,7 +47,8 @@ std::optional<std::size_t> sweep_grid_size(const std::vector<SweepAxis>& axes);
 struct SweepPoint {
   std::vector<std::size_t> index;  // per axis, into its values
   std::string name;                // "edges.threshold=0.85,planes.distance_m=0.012"
-  std::vector<std::pair<std::string, std::string>> sets;  // node.param -> value text
+  std::vector<std::pair<std::string, std::string>> sets;    // node.param -> value text
+  std::vector<std::pair<std::string, std::string>> params;  // graph parameter -> value text
 };
 
 // Every combination of the axes' values, the first axis varying slowest (as nested loops in the
