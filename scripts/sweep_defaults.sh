@@ -13,10 +13,12 @@ shift
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 facet="${FACET:-$here/build/bin/facet}"
 
-# node.param=start:stop:step, the default in the middle.
+# node.param=start:stop:step (or param=... for a graph parameter), the default in the middle.
+# edge_threshold is the graph parameter that moves the edge filter and the normals' noise
+# measure together, as `--param edge_threshold=T` does.
 sweeps=(
-  edges.threshold=0.80:0.90:0.025
-  planes.distance_m=0.010:0.014:0.001
+  edge_threshold=0.80:0.90:0.025
+  planes.distance_m=0.008:0.012:0.001
   planes.min_object_height_m=0.004:0.008:0.001
   planes.max_behind_fraction=0.04:0.06:0.005
   planes.min_view_fraction=0.008:0.012:0.001
