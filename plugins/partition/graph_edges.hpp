@@ -83,12 +83,15 @@ struct CurvatureRule {
   // 3D boxes further apart, up to this: tested only when an occluder hides the gap (the
   // coplanar feature's occlusion test, against the chord plane of the two patches).
   double max_occluded_gap_m = 0.15;
+  // Where no elliptic quadric fits, one circular cylinder of at most this radius may (a can lying
+  // behind an occluder, whose pieces the quadric takes for two planes); 0 = quadrics only.
+  double cylinder_max_radius_m = 0.15;
 };
 
 // curvature: two curved patches close in 3D (often in two blobs: the rim of a bowl seen from
 // above is a depth step between inside and outside), or further apart with an occluder between
 // them, that one elliptic quadric (sphere, ellipsoid, elliptic cylinder or paraboloid: the
-// shapes of cups, bowls and cans) fits.
+// shapes of cups, bowls and cans) or one circular cylinder (cylinder_fit.hpp) fits.
 void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
                          const FrameImages& images, const CoplanarRule& occlusion,
                          const CurvatureRule& rule, std::vector<GraphEdge>& edges);

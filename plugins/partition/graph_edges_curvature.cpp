@@ -2,13 +2,15 @@
 // and the outside of a bowl, which meet at the rim. Their junction is concave seen from the
 // camera, so the convex feature cannot join them; but both lie on one elliptic quadric (sphere,
 // ellipsoid, elliptic cylinder or paraboloid), up to the wall thickness, while two touching
-// round objects (two cans, a cup beside a bowl) need two.
+// round objects (two cans, a cup beside a bowl) need two. The two pieces of a can lying behind
+// an occluder are fitted by a circular cylinder instead (cylinder_fit.hpp).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
 
+#include "partition/cylinder_fit.hpp"
 #include "partition/graph_candidates.hpp"
 #include "partition/graph_edges.hpp"
 #include "partition/graph_gap.hpp"
@@ -137,6 +139,10 @@ void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
   }
   Samples samples;
   std::int32_t sampled = -1;  // the node whose points samples.a holds
+  OrientedSamples oriented_a;
+  OrientedSamples oriented_b;
+  std::int32_t oriented = -1;  // the node whose points oriented_a holds
+  const CylinderRule cylinder{rule.tolerance_m, rule.min_share, rule.cylinder_max_radius_m};
   for (const CandidatePair& pair :
        nearest_pairs(std::move(candidates), static_cast<std::int32_t>(graph.nodes.size()),
                      occlusion.max_partners)) {
@@ -156,6 +162,18 @@ void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
     take_samples(points, points.segments[static_cast<std::size_t>(b.segment)], rule.max_samples,
                  samples.b);
     if (one_elliptic_quadric(samples, rule)) {
+      edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
+      continue;
+    }
+    if (!(rule.cylinder_max_radius_m > 0.0)) continue;
+    if (oriented != pair.a) {
+      take_oriented_samples(points, points.segments[static_cast<std::size_t>(a.segment)],
+                            *images.points, rule.max_samples, oriented_a);
+      oriented = pair.a;
+    }
+    take_oriented_samples(points, points.segments[static_cast<std::size_t>(b.segment)],
+                          *images.points, rule.max_samples, oriented_b);
+    if (one_circular_cylinder(oriented_a, oriented_b, cylinder)) {
       edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
     }
   }

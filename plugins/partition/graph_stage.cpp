@@ -176,6 +176,19 @@ const Param<double> kCurvatureMaxOccludedGapM{
     "of the two) says an occluder hides the gap: one can seen on both sides of a "
     "bottle.",
     {.unit = "m", .min = 0.0, .max = 1.0, .origin = "table-top objects"}};
+const Param<double> kCurvatureCylinderMaxRadiusM{
+    "curvature_cylinder_max_radius_m",
+    0.15,
+    "Where no elliptic quadric fits two curved patches, one circular cylinder up to this "
+    "radius may: its axis perpendicular to both patches' normals, curvature_min_share of "
+    "each patch's points within curvature_tolerance_m of it. A can lying behind an "
+    "occluder shows two pieces a few centimetres deep each, which the quadric fit takes "
+    "for two planes facing the camera. 0 = quadrics only.",
+    {.unit = "m",
+     .min = 0.0,
+     .max = 1.0,
+     .origin = "table-top cylinders; measured on mOSD learn frames and generated scenes "
+               "(docs/partition.md)"}};
 const Param<bool> kFloor{
     "floor",
     true,
@@ -390,7 +403,8 @@ StageSpec PartitionGraph::spec() {
              "patches may be in different blobs, so an object may span blobs. curvature = two "
              "curved patches (any blobs) whose 3D boxes are within curvature_max_gap_m, or "
              "within curvature_max_occluded_gap_m with an occluded gap (as above), that one "
-             "elliptic quadric fits (curvature_min_share of each within curvature_tolerance_m). "
+             "elliptic quadric fits (curvature_min_share of each within curvature_tolerance_m), "
+             "or one circular cylinder (curvature_cylinder_max_radius_m). "
              "floor = a planar patch and a larger curved one of its blob that touch, rise in "
              "front of its plane and wrap around its centre (a pot's floor and wall). "
              "Cut: while a group's "
@@ -413,8 +427,8 @@ StageSpec PartitionGraph::spec() {
                kCoplanarMinFrontShare, kCoplanarMinGapPx, kCoplanarLines, kCoplanarAcrossBlobsOnly,
                kCoplanarTouchingMaxDistanceM, kCoplanarBodyOnSurface, kMaxPartners, kCurvature,
                kCurvatureToleranceM, kCurvatureMinShare, kCurvatureMinAxisRatio, kCurvatureSamples,
-               kCurvatureMaxGapM, kCurvatureMaxOccludedGapM, kFloor, kFloorMinRiseM,
-               kFloorMinWrapDeg, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
+               kCurvatureMaxGapM, kCurvatureMaxOccludedGapM, kCurvatureCylinderMaxRadiusM, kFloor,
+               kFloorMinRiseM, kFloorMinWrapDeg, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
                kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM,
                kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM, kFrontBodyKeepEnclosing,
                kFrontBodyBeyondMarginM, kFrontBodyBeyondBandPx, kStepMinOffsetM, kStepMaxAngleDeg,
@@ -442,9 +456,10 @@ PartitionGraph::PartitionGraph(const Params& params)
                          kCoplanarAcrossBlobsOnly(params), kCoplanarTouchingMaxDistanceM(params),
                          kCoplanarBodyOnSurface(params)};
   rule_.curvature = kCurvature(params);
-  rule_.curvature_rule = {kCurvatureToleranceM(params),   kCurvatureMinShare(params),
-                          kCurvatureMinAxisRatio(params), kCurvatureSamples(params),
-                          kCurvatureMaxGapM(params),      kCurvatureMaxOccludedGapM(params)};
+  rule_.curvature_rule = {kCurvatureToleranceM(params),        kCurvatureMinShare(params),
+                          kCurvatureMinAxisRatio(params),      kCurvatureSamples(params),
+                          kCurvatureMaxGapM(params),           kCurvatureMaxOccludedGapM(params),
+                          kCurvatureCylinderMaxRadiusM(params)};
   rule_.floor = kFloor(params);
   rule_.floor_rule = {kFloorMinRiseM(params), kFloorMinWrapDeg(params)};
   rule_.steps = {kStepMinOffsetM(params), kStepMaxAngleDeg(params)};

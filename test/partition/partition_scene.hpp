@@ -52,6 +52,15 @@ class Tabletop {
     builder_.cylinder(pose(x_m, y_m, base_m + half_height_m), radius_m, half_height_m);
     return *this;
   }
+  // A cylinder lying on the table, its axis along x turned by yaw.
+  Tabletop& lying_cylinder(double x_m, double y_m, double radius_m, double half_length_m,
+                           double yaw_deg = 0.0) {
+    Eigen::Isometry3d axis_along_x = pose(x_m, y_m, radius_m, yaw_deg);
+    axis_along_x.linear() *=
+        Eigen::AngleAxisd(std::numbers::pi / 2.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    builder_.cylinder(axis_along_x, radius_m, half_length_m);
+    return *this;
+  }
   const SceneBuilder& builder() const { return builder_; }
 
  private:
