@@ -86,6 +86,7 @@ struct CurvatureRule {
   // Where no elliptic quadric fits, one circular cylinder of at most this radius may (a can lying
   // behind an occluder, whose pieces the quadric takes for two planes); 0 = quadrics only.
   double cylinder_max_radius_m = 0.15;
+  bool flat_rims = true;
 };
 
 // curvature: two curved patches close in 3D (often in two blobs: the rim of a bowl seen from

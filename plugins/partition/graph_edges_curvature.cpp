@@ -62,7 +62,13 @@ double share_on_quadric(const std::vector<Eigen::Vector3d>& samples, const Eigen
   return static_cast<double>(on) / static_cast<double>(samples.size());
 }
 
-bool one_elliptic_quadric(const Samples& samples, const CurvatureRule& rule) {
+// Which quadrics count: every elliptic one, or closed ones only (an ellipsoid or sphere: all three
+// curvature directions bend the same way, the weakest at least rule.min_axis_ratio of the
+// strongest), which leaves out cylinders.
+enum class QuadricKind { elliptic, closed };
+
+bool one_elliptic_quadric(const Samples& samples, const CurvatureRule& rule,
+                          QuadricKind kind = QuadricKind::elliptic) {
   if (samples.a.size() < 10 || samples.b.size() < 10) return false;
   Eigen::Vector3d mean_a = Eigen::Vector3d::Zero();
   Eigen::Vector3d mean_b = Eigen::Vector3d::Zero();
@@ -109,6 +115,10 @@ bool one_elliptic_quadric(const Samples& samples, const CurvatureRule& rule) {
   if (!(std::abs(e[0]) > 0.0)) return false;
   if (e[0] * e[1] <= 0.0 || std::abs(e[1]) < rule.min_axis_ratio * std::abs(e[0])) return false;
   if (e[0] * e[2] < 0.0 && std::abs(e[2]) >= rule.min_axis_ratio * std::abs(e[0])) return false;
+  if (kind == QuadricKind::closed &&
+      (e[0] * e[2] <= 0.0 || std::abs(e[2]) < rule.min_axis_ratio * std::abs(e[0]))) {
+    return false;
+  }
 
   return share_on_quadric(samples.a, centre, scale_m, q, quadratic, rule.tolerance_m) >=
              rule.min_share &&
@@ -174,6 +184,38 @@ void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
     take_oriented_samples(points, points.segments[static_cast<std::size_t>(b.segment)],
                           *images.points, rule.max_samples, oriented_b);
     if (one_circular_cylinder(oriented_a, oriented_b, cylinder)) {
+      edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
+    }
+  }
+  if (!rule.flat_rims) return;
+  // A bowl's outside seen as a band below its rim may fit a plane. It is tested with the inside
+  // it borders too (another blob, behind the rim's depth step, and smaller), against closed
+  // quadrics only: a bowl is a cap of a sphere or an ellipsoid, while a can and the face of a box
+  // beside it fit an elliptic cylinder.
+  std::vector<CandidatePair> flat;
+  for (const std::int32_t x : curved) {
+    const GraphNode& a = graph.nodes[static_cast<std::size_t>(x)];
+    for (std::size_t y = 0; y < graph.nodes.size(); ++y) {
+      const GraphNode& b = graph.nodes[y];
+      if (b.segment < 0 || !b.planar || b.blob == a.blob || b.size_px >= a.size_px) continue;
+      const double gap_m = box_gap_m(a.bounds, b.bounds);
+      if (gap_m <= rule.max_gap_m) flat.push_back({x, static_cast<std::int32_t>(y), gap_m});
+    }
+  }
+  sampled = -1;
+  for (const CandidatePair& pair :
+       nearest_pairs(std::move(flat), static_cast<std::int32_t>(graph.nodes.size()),
+                     occlusion.max_partners)) {
+    const GraphNode& a = graph.nodes[static_cast<std::size_t>(pair.a)];
+    const GraphNode& b = graph.nodes[static_cast<std::size_t>(pair.b)];
+    if (sampled != pair.a) {
+      take_samples(points, points.segments[static_cast<std::size_t>(a.segment)], rule.max_samples,
+                   samples.a);
+      sampled = pair.a;
+    }
+    take_samples(points, points.segments[static_cast<std::size_t>(b.segment)], rule.max_samples,
+                 samples.b);
+    if (one_elliptic_quadric(samples, rule, QuadricKind::closed)) {
       edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
     }
   }

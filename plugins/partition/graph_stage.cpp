@@ -189,6 +189,14 @@ const Param<double> kCurvatureCylinderMaxRadiusM{
      .max = 1.0,
      .origin = "table-top cylinders; measured on mOSD learn frames and generated scenes "
                "(docs/partition.md)"}};
+const Param<bool> kCurvatureFlatRims{
+    "curvature_flat_rims",
+    true,
+    "Also test a curved patch with each smaller planar patch of another blob within "
+    "curvature_max_gap_m, against closed quadrics only (ellipsoid, sphere): seen from above, "
+    "a bowl's outside may be a band below the rim flat enough to count as planar, while a "
+    "can and the face of a box beside it fit an elliptic cylinder.",
+    {.origin = "measured on mOSD learn frames and generated scenes (docs/partition.md)"}};
 const Param<bool> kFloor{
     "floor",
     true,
@@ -404,7 +412,9 @@ StageSpec PartitionGraph::spec() {
              "curved patches (any blobs) whose 3D boxes are within curvature_max_gap_m, or "
              "within curvature_max_occluded_gap_m with an occluded gap (as above), that one "
              "elliptic quadric fits (curvature_min_share of each within curvature_tolerance_m), "
-             "or one circular cylinder (curvature_cylinder_max_radius_m). "
+             "or one circular cylinder (curvature_cylinder_max_radius_m); a curved patch and a "
+             "smaller planar one of another blob within curvature_max_gap_m, that one closed "
+             "quadric fits (curvature_flat_rims). "
              "floor = a planar patch and a larger curved one of its blob that touch, rise in "
              "front of its plane and wrap around its centre (a pot's floor and wall). "
              "Cut: while a group's "
@@ -427,12 +437,13 @@ StageSpec PartitionGraph::spec() {
                kCoplanarMinFrontShare, kCoplanarMinGapPx, kCoplanarLines, kCoplanarAcrossBlobsOnly,
                kCoplanarTouchingMaxDistanceM, kCoplanarBodyOnSurface, kMaxPartners, kCurvature,
                kCurvatureToleranceM, kCurvatureMinShare, kCurvatureMinAxisRatio, kCurvatureSamples,
-               kCurvatureMaxGapM, kCurvatureMaxOccludedGapM, kCurvatureCylinderMaxRadiusM, kFloor,
-               kFloorMinRiseM, kFloorMinWrapDeg, kCut, kMaxCutCost, kCutNeedsCycles, kMaxCutNodes,
-               kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx, kUnclaimedCoreRadiusM,
-               kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM, kFrontBodyKeepEnclosing,
-               kFrontBodyBeyondMarginM, kFrontBodyBeyondBandPx, kStepMinOffsetM, kStepMaxAngleDeg,
-               kStepSplitFaces, kEmitGraph, algo::kReferenceAreaParam)
+               kCurvatureMaxGapM, kCurvatureMaxOccludedGapM, kCurvatureCylinderMaxRadiusM,
+               kCurvatureFlatRims, kFloor, kFloorMinRiseM, kFloorMinWrapDeg, kCut, kMaxCutCost,
+               kCutNeedsCycles, kMaxCutNodes, kUnclaimedCoreRadiusPx, kUnclaimedCoreMinPx,
+               kUnclaimedCoreRadiusM, kFrontBodyMarginM, kFrontBodyMinPx, kFrontBodyFaceRmsAt1mM,
+               kFrontBodyKeepEnclosing, kFrontBodyBeyondMarginM, kFrontBodyBeyondBandPx,
+               kStepMinOffsetM, kStepMaxAngleDeg, kStepSplitFaces, kEmitGraph,
+               algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
@@ -456,10 +467,14 @@ PartitionGraph::PartitionGraph(const Params& params)
                          kCoplanarAcrossBlobsOnly(params), kCoplanarTouchingMaxDistanceM(params),
                          kCoplanarBodyOnSurface(params)};
   rule_.curvature = kCurvature(params);
-  rule_.curvature_rule = {kCurvatureToleranceM(params),        kCurvatureMinShare(params),
-                          kCurvatureMinAxisRatio(params),      kCurvatureSamples(params),
-                          kCurvatureMaxGapM(params),           kCurvatureMaxOccludedGapM(params),
-                          kCurvatureCylinderMaxRadiusM(params)};
+  rule_.curvature_rule = {kCurvatureToleranceM(params),
+                          kCurvatureMinShare(params),
+                          kCurvatureMinAxisRatio(params),
+                          kCurvatureSamples(params),
+                          kCurvatureMaxGapM(params),
+                          kCurvatureMaxOccludedGapM(params),
+                          kCurvatureCylinderMaxRadiusM(params),
+                          kCurvatureFlatRims(params)};
   rule_.floor = kFloor(params);
   rule_.floor_rule = {kFloorMinRiseM(params), kFloorMinWrapDeg(params)};
   rule_.steps = {kStepMinOffsetM(params), kStepMaxAngleDeg(params)};
