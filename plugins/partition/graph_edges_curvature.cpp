@@ -126,6 +126,86 @@ bool one_elliptic_quadric(const Samples& samples, const CurvatureRule& rule,
              rule.min_share;
 }
 
+// The samples of a candidate pair's two patches. nearest_pairs returns the pairs grouped by
+// their first node, so that node's samples are kept until it changes.
+class PairSampler {
+ public:
+  PairSampler(const BlobSegments& points, const GraphNodes& graph, const cv::Mat& point_image,
+              std::int32_t max_samples)
+      : points_(points), graph_(graph), point_image_(point_image), max_samples_(max_samples) {}
+
+  const Samples& points(const CandidatePair& pair) {
+    if (points_of_ != pair.a) {
+      take_samples(points_, segment_of(pair.a), max_samples_, samples_.a);
+      points_of_ = pair.a;
+    }
+    take_samples(points_, segment_of(pair.b), max_samples_, samples_.b);
+    return samples_;
+  }
+
+  // The points with their normals, for the cylinder: first node, second node.
+  std::pair<const OrientedSamples&, const OrientedSamples&> oriented(const CandidatePair& pair) {
+    if (oriented_of_ != pair.a) {
+      take_oriented_samples(points_, segment_of(pair.a), point_image_, max_samples_, oriented_a_);
+      oriented_of_ = pair.a;
+    }
+    take_oriented_samples(points_, segment_of(pair.b), point_image_, max_samples_, oriented_b_);
+    return {oriented_a_, oriented_b_};
+  }
+
+ private:
+  const Segment& segment_of(std::int32_t node) const {
+    return points_
+        .segments[static_cast<std::size_t>(graph_.nodes[static_cast<std::size_t>(node)].segment)];
+  }
+
+  const BlobSegments& points_;
+  const GraphNodes& graph_;
+  const cv::Mat& point_image_;
+  std::int32_t max_samples_;
+  Samples samples_;
+  std::int32_t points_of_ = -1;  // the node whose points samples_.a holds
+  OrientedSamples oriented_a_;
+  OrientedSamples oriented_b_;
+  std::int32_t oriented_of_ = -1;  // the node whose points oriented_a_ holds
+};
+
+// Pairs of curved patches close in 3D, or further apart up to max_occluded_gap_m.
+std::vector<CandidatePair> curved_pairs(const GraphNodes& graph,
+                                        const std::vector<std::int32_t>& curved,
+                                        const CurvatureRule& rule) {
+  std::vector<CandidatePair> pairs;
+  for (std::size_t x = 0; x < curved.size(); ++x) {
+    const GraphNode& a = graph.nodes[static_cast<std::size_t>(curved[x])];
+    for (std::size_t y = x + 1; y < curved.size(); ++y) {
+      const GraphNode& b = graph.nodes[static_cast<std::size_t>(curved[y])];
+      const double gap_m = box_gap_m(a.bounds, b.bounds);
+      if (gap_m <= std::max(rule.max_gap_m, rule.max_occluded_gap_m)) {
+        pairs.push_back({curved[x], curved[y], gap_m});
+      }
+    }
+  }
+  return pairs;
+}
+
+// A bowl's outside seen as a band below its rim may fit a plane: each curved patch with the
+// smaller planar patches of other blobs (behind the rim's depth step) close to it in 3D.
+std::vector<CandidatePair> flat_rim_pairs(const GraphNodes& graph,
+                                          const std::vector<std::int32_t>& curved,
+                                          const CurvatureRule& rule) {
+  std::vector<CandidatePair> pairs;
+  for (const std::int32_t x : curved) {
+    const GraphNode& a = graph.nodes[static_cast<std::size_t>(x)];
+    for (std::size_t y = 0; y < graph.nodes.size(); ++y) {
+      const GraphNode& b = graph.nodes[y];
+      if (b.segment < 0 || !b.planar || b.blob == a.blob || b.size_px >= a.size_px) continue;
+      const double gap_m = box_gap_m(a.bounds, b.bounds);
+      if (gap_m <= rule.max_gap_m) pairs.push_back({x, static_cast<std::int32_t>(y), gap_m});
+    }
+  }
+  return pairs;
+}
+
 }  // namespace
 
 void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
@@ -136,26 +216,11 @@ void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
     const GraphNode& node = graph.nodes[i];
     if (node.segment >= 0 && !node.planar) curved.push_back(static_cast<std::int32_t>(i));
   }
-  std::vector<CandidatePair> candidates;
-  for (std::size_t x = 0; x < curved.size(); ++x) {
-    const GraphNode& a = graph.nodes[static_cast<std::size_t>(curved[x])];
-    for (std::size_t y = x + 1; y < curved.size(); ++y) {
-      const GraphNode& b = graph.nodes[static_cast<std::size_t>(curved[y])];
-      const double gap_m = box_gap_m(a.bounds, b.bounds);
-      if (gap_m <= std::max(rule.max_gap_m, rule.max_occluded_gap_m)) {
-        candidates.push_back({curved[x], curved[y], gap_m});
-      }
-    }
-  }
-  Samples samples;
-  std::int32_t sampled = -1;  // the node whose points samples.a holds
-  OrientedSamples oriented_a;
-  OrientedSamples oriented_b;
-  std::int32_t oriented = -1;  // the node whose points oriented_a holds
+  const auto node_count = static_cast<std::int32_t>(graph.nodes.size());
   const CylinderRule cylinder{rule.tolerance_m, rule.min_share, rule.cylinder_max_radius_m};
+  PairSampler curved_samples(points, graph, *images.points, rule.max_samples);
   for (const CandidatePair& pair :
-       nearest_pairs(std::move(candidates), static_cast<std::int32_t>(graph.nodes.size()),
-                     occlusion.max_partners)) {
+       nearest_pairs(curved_pairs(graph, curved, rule), node_count, occlusion.max_partners)) {
     const GraphNode& a = graph.nodes[static_cast<std::size_t>(pair.a)];
     const GraphNode& b = graph.nodes[static_cast<std::size_t>(pair.b)];
     if (pair.gap_m > rule.max_gap_m &&
@@ -164,58 +229,23 @@ void add_curvature_edges(const BlobSegments& points, const GraphNodes& graph,
                      occlusion.min_gap_px, occlusion.min_front_share)) {
       continue;
     }
-    if (sampled != pair.a) {
-      take_samples(points, points.segments[static_cast<std::size_t>(a.segment)], rule.max_samples,
-                   samples.a);
-      sampled = pair.a;
-    }
-    take_samples(points, points.segments[static_cast<std::size_t>(b.segment)], rule.max_samples,
-                 samples.b);
-    if (one_elliptic_quadric(samples, rule)) {
+    if (one_elliptic_quadric(curved_samples.points(pair), rule)) {
       edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
       continue;
     }
     if (!(rule.cylinder_max_radius_m > 0.0)) continue;
-    if (oriented != pair.a) {
-      take_oriented_samples(points, points.segments[static_cast<std::size_t>(a.segment)],
-                            *images.points, rule.max_samples, oriented_a);
-      oriented = pair.a;
-    }
-    take_oriented_samples(points, points.segments[static_cast<std::size_t>(b.segment)],
-                          *images.points, rule.max_samples, oriented_b);
+    const auto [oriented_a, oriented_b] = curved_samples.oriented(pair);
     if (one_circular_cylinder(oriented_a, oriented_b, cylinder)) {
       edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
     }
   }
   if (!rule.flat_rims) return;
-  // A bowl's outside seen as a band below its rim may fit a plane. It is tested with the inside
-  // it borders too (another blob, behind the rim's depth step, and smaller), against closed
-  // quadrics only: a bowl is a cap of a sphere or an ellipsoid, while a can and the face of a box
-  // beside it fit an elliptic cylinder.
-  std::vector<CandidatePair> flat;
-  for (const std::int32_t x : curved) {
-    const GraphNode& a = graph.nodes[static_cast<std::size_t>(x)];
-    for (std::size_t y = 0; y < graph.nodes.size(); ++y) {
-      const GraphNode& b = graph.nodes[y];
-      if (b.segment < 0 || !b.planar || b.blob == a.blob || b.size_px >= a.size_px) continue;
-      const double gap_m = box_gap_m(a.bounds, b.bounds);
-      if (gap_m <= rule.max_gap_m) flat.push_back({x, static_cast<std::int32_t>(y), gap_m});
-    }
-  }
-  sampled = -1;
+  // Closed quadrics only: a bowl is a cap of a sphere or an ellipsoid, while a can and the face
+  // of a box beside it fit an elliptic cylinder.
+  PairSampler flat_samples(points, graph, *images.points, rule.max_samples);
   for (const CandidatePair& pair :
-       nearest_pairs(std::move(flat), static_cast<std::int32_t>(graph.nodes.size()),
-                     occlusion.max_partners)) {
-    const GraphNode& a = graph.nodes[static_cast<std::size_t>(pair.a)];
-    const GraphNode& b = graph.nodes[static_cast<std::size_t>(pair.b)];
-    if (sampled != pair.a) {
-      take_samples(points, points.segments[static_cast<std::size_t>(a.segment)], rule.max_samples,
-                   samples.a);
-      sampled = pair.a;
-    }
-    take_samples(points, points.segments[static_cast<std::size_t>(b.segment)], rule.max_samples,
-                 samples.b);
-    if (one_elliptic_quadric(samples, rule, QuadricKind::closed)) {
+       nearest_pairs(flat_rim_pairs(graph, curved, rule), node_count, occlusion.max_partners)) {
+    if (one_elliptic_quadric(flat_samples.points(pair), rule, QuadricKind::closed)) {
       edges.push_back({pair.a, pair.b, EdgeFeature::curvature});
     }
   }
