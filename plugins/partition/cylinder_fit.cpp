@@ -45,25 +45,35 @@ struct Circle {
 };
 
 // The algebraic (Kåsa) circle through points projected onto the plane of `u` and `v`, each set
-// weighted equally: x² + y² + D x + E y + F = 0 by least squares.
+// weighted equally: x² + y² + D x + E y + F = 0 by least squares, in coordinates centred on the
+// points (a can 4 cm across 0.8 m from the camera would otherwise make the system ill-posed).
 bool fit_circle(const OrientedSamples& a, const OrientedSamples& b, const Eigen::Vector3d& u,
                 const Eigen::Vector3d& v, Circle& circle) {
+  const auto project = [&](const Eigen::Vector3d& p) {
+    return Eigen::Vector2d(p.dot(u), p.dot(v));
+  };
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto* set : {&a, &b}) {
+    for (const Eigen::Vector3d& p : set->points)
+      mean += project(p) / (2.0 * static_cast<double>(set->points.size()));
+  }
   Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
   Eigen::Vector3d right = Eigen::Vector3d::Zero();
   for (const auto* set : {&a, &b}) {
     const double weight = 1.0 / static_cast<double>(set->points.size());
     for (const Eigen::Vector3d& p : set->points) {
-      const Eigen::Vector3d row(p.dot(u), p.dot(v), 1.0);
-      const double target = -(row(0) * row(0) + row(1) * row(1));
+      const Eigen::Vector2d q = project(p) - mean;
+      const Eigen::Vector3d row(q.x(), q.y(), 1.0);
       normal += weight * row * row.transpose();
-      right += weight * target * row;
+      right -= weight * q.squaredNorm() * row;
     }
   }
   const Eigen::Vector3d solution = normal.ldlt().solve(right);
   if (!solution.allFinite()) return false;
-  circle.centre = -0.5 * solution.head<2>();
-  const double squared = circle.centre.squaredNorm() - solution(2);
+  const Eigen::Vector2d centre = -0.5 * solution.head<2>();
+  const double squared = centre.squaredNorm() - solution(2);
   if (!(squared > 0.0)) return false;
+  circle.centre = centre + mean;
   circle.radius = std::sqrt(squared);
   return true;
 }
