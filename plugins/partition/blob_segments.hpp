@@ -3,6 +3,7 @@
 // patch, then in raster order. Both partition stages work on contiguous index ranges of these
 // arrays, so a plane is tested against a patch with one tight, vectorisable loop.
 
+#include <algorithm>
 #include <cstdint>
 #include <opencv2/core/mat.hpp>
 #include <vector>
@@ -16,6 +17,13 @@ struct Segment {
   std::int32_t end = 0;
   std::int32_t size() const { return end - begin; }
 };
+
+// The step through a segment's raster-ordered points that takes at most `max_samples` of them,
+// spread over the whole patch rather than its first rows.
+inline std::int32_t sample_stride(const Segment& segment, std::int32_t max_samples) {
+  return std::max<std::int32_t>(
+      1, (segment.size() + max_samples - 1) / std::max<std::int32_t>(max_samples, 1));
+}
 
 // One non-empty blob: its segments [segment_begin, segment_end), ascending patch id, and its
 // points [begin, end).

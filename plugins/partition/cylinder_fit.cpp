@@ -102,9 +102,7 @@ void take_oriented_samples(const BlobSegments& points, const Segment& segment,
     return image[static_cast<std::size_t>(v) * static_cast<std::size_t>(width) +
                  static_cast<std::size_t>(u)];
   };
-  // A fixed stride over the raster-ordered points spreads the samples over the whole patch.
-  const std::int32_t stride = std::max<std::int32_t>(
-      1, (segment.size() + max_samples - 1) / std::max<std::int32_t>(max_samples, 1));
+  const std::int32_t stride = sample_stride(segment, max_samples);
   for (std::int32_t k = segment.begin; k < segment.end; k += stride) {
     const std::int32_t pixel = points.pixel[static_cast<std::size_t>(k)];
     const int u = pixel % width;

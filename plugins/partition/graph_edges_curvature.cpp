@@ -36,9 +36,7 @@ struct Samples {
 void take_samples(const BlobSegments& points, const Segment& segment, std::int32_t max_samples,
                   std::vector<Eigen::Vector3d>& out) {
   out.clear();
-  // A fixed stride over the raster-ordered points spreads the samples over the whole patch.
-  const std::int32_t stride = std::max<std::int32_t>(
-      1, (segment.size() + max_samples - 1) / std::max<std::int32_t>(max_samples, 1));
+  const std::int32_t stride = sample_stride(segment, max_samples);
   for (std::int32_t k = segment.begin; k < segment.end; k += stride) {
     const auto i = static_cast<std::size_t>(k);
     out.emplace_back(points.x[i], points.y[i], points.z[i]);
