@@ -556,13 +556,9 @@ TEST(PartitionGraph, BowlTouchingACanIsTwoObjects) {
   const TableScene s = bowl_touching_can();
   const PartitionInput input = graph_input(s.scene, s.table);
   ASSERT_EQ(count_of(input.blobs), 1);
-  std::vector<Metric> metrics;
-  const LabelImage objects = run_graph(input, {}, &metrics);
+  const LabelImage objects = run_graph(input);
   EXPECT_EQ(objects.count, 2);
   EXPECT_TRUE(matches_bodies(objects, bodies_without(s.scene, s.table), 0.9));
-  for (const auto& m : metrics)
-    std::cout << m.name << "=" << m.value << " ";
-  std::cout << "\noff: " << run_graph(input, {{"curvature_flat_rims", false}}).count << "\n";
 }
 
 TEST(PartitionGraphScenes, APotHasAFlatFloorInsideItsWall) {
