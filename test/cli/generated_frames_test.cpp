@@ -8,8 +8,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
+#include "majority_labels.hpp"
 
 namespace facet::test {
 namespace {
@@ -29,27 +31,16 @@ fs::path generate(const fs::path& dir, const std::string& preset, int seed) {
   return set;
 }
 
-// The ground-truth objects whose pixels mostly carry a label that mostly belongs to another
-// object too: what an under-segmentation merged. Object -> the labels' majority owner.
-std::set<int> merged_objects(const cv::Mat& truth, const cv::Mat& labels) {
-  std::map<int, std::map<int, int>> votes;  // object -> label -> pixels
-  for (int v = 0; v < truth.rows; ++v) {
-    for (int u = 0; u < truth.cols; ++u) {
-      const int object = truth.at<std::uint16_t>(v, u);
-      if (object > 0) ++votes[object][labels.at<std::uint16_t>(v, u)];
-    }
-  }
+// The ground-truth objects (CV_16UC1 ids 1..count) whose majority label (majority_labels) is
+// also another object's: what an under-segmentation merged.
+std::set<int> merged_objects(const cv::Mat& truth, int count, const cv::Mat& labels) {
+  cv::Mat ids;
+  truth.convertTo(ids, CV_32S);
+  const std::vector<int> majority = majority_labels(ids, count, labels);
   std::map<int, std::set<int>> objects_of_label;
-  for (const auto& [object, counts] : votes) {
-    int best = 0;
-    int best_pixels = 0;
-    for (const auto& [label, pixels] : counts) {
-      if (pixels > best_pixels) {
-        best = label;
-        best_pixels = pixels;
-      }
-    }
-    if (best > 0) objects_of_label[best].insert(object);
+  for (int object = 1; object <= count; ++object) {
+    const int label = majority[static_cast<std::size_t>(object)];
+    if (label > 0) objects_of_label[label].insert(object);
   }
   std::set<int> merged;
   for (const auto& [label, objects] : objects_of_label) {
@@ -79,7 +70,7 @@ TEST(GeneratedFrames, CanBesideABoxStaysApartFromTheBoxsFace) {
   double objects = 0.0;
   cv::minMaxLoc(truth, nullptr, &objects);
   EXPECT_EQ(objects, 8.0);
-  EXPECT_TRUE(merged_objects(truth, labels).empty());
+  EXPECT_TRUE(merged_objects(truth, static_cast<int>(objects), labels).empty());
 }
 
 }  // namespace
