@@ -53,28 +53,33 @@ void check_size(const std::filesystem::path& file, int width, int height,
   }
 }
 
-// The dataset's own PNGs (grey 8/16-bit, RGB) go through the fast codec; anything else it does
-// not handle (palette, alpha, interlaced PNGs, other formats) through OpenCV. IMREAD_UNCHANGED
-// keeps 16 bits; the default flags would squash the image to 8-bit colour.
+// The dataset's own PNGs (grey 8/16-bit, RGB) go through the fast codec; the PNGs it does not
+// handle (palette, alpha, interlaced) through OpenCV. IMREAD_UNCHANGED keeps 16 bits; the default
+// flags would squash the image to 8-bit colour.
 // A PNG's size is checked against the camera's before a pixel is allocated (a 69-byte file may
 // declare 23170x23170 pixels), and a PNG left to OpenCV is checked for integrity first: libpng
 // only warns about corrupt image data and decodes garbage.
+// Bytes without a PNG signature are refused, not handed to OpenCV's other decoders: those
+// allocate what their header declares before this check could run (a 97-byte JPEG 2000
+// codestream asks for 1.8 GB), and no depth or label format we read is anything but PNG.
 cv::Mat read_unchanged(const std::filesystem::path& file, const CameraIntrinsics& camera) {
   const std::vector<std::uint8_t> bytes = read_bytes(file);
-  if (png::has_signature(bytes)) {
-    try {
-      const png::Info info = png::read_info(bytes);
-      if (info.width > static_cast<std::uint32_t>(std::numeric_limits<int>::max()) ||
-          info.height > static_cast<std::uint32_t>(std::numeric_limits<int>::max())) {
-        throw png::FormatError("its header declares " + std::to_string(info.width) + "x" +
-                               std::to_string(info.height) + " pixels");
-      }
-      check_size(file, static_cast<int>(info.width), static_cast<int>(info.height), camera);
-      if (std::optional<cv::Mat> image = png::decode(bytes)) return *std::move(image);
-      png::check_integrity(bytes);
-    } catch (const png::FormatError& e) {
-      throw StageError("cannot read " + quoted(file) + ": " + e.what());
+  if (!png::has_signature(bytes)) {
+    throw StageError("cannot read " + quoted(file) +
+                     ": not a PNG file (no PNG signature); depth and labels are read from PNGs");
+  }
+  try {
+    const png::Info info = png::read_info(bytes);
+    if (info.width > static_cast<std::uint32_t>(std::numeric_limits<int>::max()) ||
+        info.height > static_cast<std::uint32_t>(std::numeric_limits<int>::max())) {
+      throw png::FormatError("its header declares " + std::to_string(info.width) + "x" +
+                             std::to_string(info.height) + " pixels");
     }
+    check_size(file, static_cast<int>(info.width), static_cast<int>(info.height), camera);
+    if (std::optional<cv::Mat> image = png::decode(bytes)) return *std::move(image);
+    png::check_integrity(bytes);
+  } catch (const png::FormatError& e) {
+    throw StageError("cannot read " + quoted(file) + ": " + e.what());
   }
   cv::Mat image;
   try {
@@ -83,9 +88,7 @@ cv::Mat read_unchanged(const std::filesystem::path& file, const CameraIntrinsics
     throw StageError("cannot read " + quoted(file) + ": " + e.what());
   }
   if (image.empty()) {
-    throw StageError("cannot read " + quoted(file) +
-                     ": not a readable image (truncated, corrupt "
-                     "or not a PNG)");
+    throw StageError("cannot read " + quoted(file) + ": not a readable PNG (truncated or corrupt)");
   }
   check_size(file, image.cols, image.rows, camera);
   return image;

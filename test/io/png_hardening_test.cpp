@@ -1,6 +1,7 @@
 // Depth and label PNGs from strangers: a size is refused before its pixels are allocated, and
 // image data that is corrupt, or longer than its header says, is an error naming the file, also
-// for the PNGs left to OpenCV (libpng only warns about them and decodes garbage).
+// for the PNGs left to OpenCV (libpng only warns about them and decodes garbage); other formats
+// are refused before any decoder allocates what their header declares.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -166,6 +167,27 @@ TEST(PngHardening, PngsOfOtherKindsAreCheckedToo) {
   const auto odd = write(dir, "odd.png", make_png(2, 2, 4, 4, 0, zlib_stored(raw)));
   expect_stage_error([&] { facet::io::read_label_png(odd, camera(2, 2)); },
                      {"odd.png", "colour type 4 at bit depth 4"});
+}
+
+TEST(PngHardening, OtherFormatsAreRefusedBeforeAnyDecoderSeesThem) {
+  // A JPEG 2000 codestream of 97 bytes whose header declares 30000x30000 16-bit pixels: handed to
+  // OpenCV, it allocated 1.8 GB before failing to decode.
+  Bytes j2k = {0xff, 0x4f, 0xff, 0x51, 0x00, 0x29, 0x00, 0x00};
+  for (int field = 0; field < 8; ++field)
+    append_u32(j2k, field == 0 || field == 1 || field == 4 || field == 5 ? 30000U : 0U);
+  j2k.insert(j2k.end(), {0x00, 0x01, 0x0f, 0x01, 0x01});
+  j2k.insert(j2k.end(), {0xff, 0x52, 0x00, 0x0c, 0, 0, 0, 1, 0, 5, 4, 4, 0, 0});
+  j2k.insert(j2k.end(), {0xff, 0x5c, 0x00, 0x04, 0x40, 0x48});
+  j2k.insert(j2k.end(), {0xff, 0x90, 0x00, 0x0a, 0, 0, 0, 0, 0, 0, 0, 1, 0xff, 0x93});
+  j2k.insert(j2k.end(), 16, 0);
+  j2k.insert(j2k.end(), {0xff, 0xd9});
+  ASSERT_EQ(j2k.size(), 97U);
+  TempDir dir;
+  const auto file = write(dir, "depth.png", j2k);
+  expect_stage_error([&] { facet::io::read_depth_png(file, camera(640, 480)); },
+                     {"depth.png", "not a PNG file"});
+  expect_stage_error([&] { facet::io::read_label_png(file, camera(640, 480)); },
+                     {"depth.png", "not a PNG file"});
 }
 
 }  // namespace
