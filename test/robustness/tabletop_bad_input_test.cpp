@@ -1,10 +1,15 @@
 // The whole tabletop graph (graphs/tabletop.yaml) on bad input: a frame with no table, empty
 // frames, frames with no valid depth, one huge blob, 200 tiny objects, a table seen edge-on, a
-// wall only, noise, a camera of another resolution. Each run must complete, write a consistent
-// result for every frame, give a sensible object count and, where it helps a user, say what was
-// wrong. What the pipeline does on each of these is documented in README.md ("Bad input").
+// wall only, noise, a camera of another resolution, a depth file that is not a PNG. Each run must
+// complete, write a consistent result for every frame, give a sensible object count and, where it
+// helps a user, say what was wrong. What the pipeline does on each of these is documented in
+// README.md ("Bad input").
 
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <vector>
 
 #include "bad_input_scenes.hpp"
 #include "tabletop_run.hpp"
@@ -112,6 +117,32 @@ TEST(TabletopBadInput, DepthOfAnotherTypeIsRefusedOrSkipped) {
                                            warning.find("f2.png") != std::string::npos;
                                   });
   EXPECT_TRUE(warned);
+  EXPECT_FALSE(std::filesystem::exists(data.output() / "labels" / "f2.png"));
+  EXPECT_TRUE(std::filesystem::exists(data.output() / "labels" / "f3.png"));
+}
+
+// A depth image in another format saved under a .png name (here a 16-bit TIFF, which OpenCV
+// would decode): refused naming the file, before any decoder allocates what its header declares,
+// or skipped.
+TEST(TabletopBadInput, DepthFileThatIsNotAPngIsRefusedOrSkipped) {
+  Dataset data(kinect_camera());
+  const cv::Mat table = depth_mm(table_with_boxes());
+  data.add("f1", table);
+  data.add("f2", table);
+  data.add("f3", table);
+  std::vector<unsigned char> tiff;
+  ASSERT_TRUE(cv::imencode(".tiff", table, tiff));
+  std::ofstream(data.input() / "depth" / "f2.png", std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(tiff.data()), static_cast<std::streamsize>(tiff.size()));
+
+  const TabletopRun failing = run_tabletop(data);
+  EXPECT_FALSE(failing.completed());
+  EXPECT_NE(failing.error.find("f2.png"), std::string::npos) << failing.error;
+  EXPECT_NE(failing.error.find("not a PNG file"), std::string::npos) << failing.error;
+
+  const TabletopRun skipping = run_tabletop(data, {{"source.on_error", "skip"}});
+  ASSERT_TRUE(skipping.completed()) << skipping.error;
+  EXPECT_EQ(skipping.frames, 2);
   EXPECT_FALSE(std::filesystem::exists(data.output() / "labels" / "f2.png"));
   EXPECT_TRUE(std::filesystem::exists(data.output() / "labels" / "f3.png"));
 }
