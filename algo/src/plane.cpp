@@ -67,6 +67,17 @@ std::optional<Plane> least_squares_plane(std::span<const float> xyz) {
   return moments.plane();
 }
 
+int ransac_hypotheses_needed(double inlier_share, double confidence) {
+  constexpr int kMany = 1 << 30;
+  if (!(confidence > 0.0)) return 1;
+  if (!(inlier_share > 0.0)) return kMany;
+  const double all_inliers = std::pow(std::min(inlier_share, 1.0), 3.0);
+  if (all_inliers >= 1.0) return 1;
+  const double needed =
+      std::log(1.0 - std::min(confidence, 1.0 - 1e-12)) / std::log(1.0 - all_inliers);
+  return needed >= kMany ? kMany : std::max(1, static_cast<int>(std::ceil(needed)));
+}
+
 std::optional<Plane> ransac_plane(std::span<const float> xyz, const RansacPlaneRule& rule,
                                   std::mt19937& rng) {
   const std::size_t count = xyz.size() / 3;
@@ -77,9 +88,13 @@ std::optional<Plane> ransac_plane(std::span<const float> xyz, const RansacPlaneR
   const std::size_t step = std::max<std::size_t>(
       1, count / static_cast<std::size_t>(std::max(1, rule.max_scored_points)));
 
+  const std::size_t scored = (count + step - 1) / step;
+  const bool adaptive = rule.confidence > 0.0 && rule.max_iterations > rule.iterations;
+  int wanted = rule.iterations;
+
   std::optional<Plane> best;
   std::size_t best_support = 0;
-  for (int iteration = 0; iteration < rule.iterations; ++iteration) {
+  for (int iteration = 0; iteration < wanted; ++iteration) {
     const Eigen::Vector3f a = point_at(xyz, pick(rng));
     const Eigen::Vector3f b = point_at(xyz, pick(rng));
     const Eigen::Vector3f c = point_at(xyz, pick(rng));
@@ -97,6 +112,11 @@ std::optional<Plane> ransac_plane(std::span<const float> xyz, const RansacPlaneR
     if (support > best_support) {
       best_support = support;
       best = hypothesis;
+      if (adaptive) {
+        const double share = static_cast<double>(support) / static_cast<double>(scored);
+        wanted = std::clamp(ransac_hypotheses_needed(share, rule.confidence), rule.iterations,
+                            rule.max_iterations);
+      }
     }
   }
   if (!best) return std::nullopt;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -143,6 +144,60 @@ TEST(RansacPlane, FindsTheTableAmongOutliersAndRefitsItsNoise) {
   ASSERT_TRUE(repeated.has_value());
   EXPECT_EQ(repeated->normal, plane->normal);
   EXPECT_EQ(repeated->offset_m, plane->offset_m);
+}
+
+TEST(RansacPlane, HypothesesNeededFollowTheInlierShare) {
+  // 1 - (1 - w³)^n ≥ 0.99: n = ceil(ln 0.01 / ln(1 - w³)).
+  EXPECT_EQ(ransac_hypotheses_needed(0.3, 0.99), 169);
+  EXPECT_EQ(ransac_hypotheses_needed(0.5, 0.99), 35);
+  EXPECT_EQ(ransac_hypotheses_needed(0.9, 0.99), 4);
+  EXPECT_EQ(ransac_hypotheses_needed(1.0, 0.99), 1);
+  EXPECT_GT(ransac_hypotheses_needed(0.0, 0.99), 1000000);
+  EXPECT_LT(ransac_hypotheses_needed(0.3, 0.9), ransac_hypotheses_needed(0.3, 0.99));
+}
+
+// A patch that spans a table, the floor below it and what stands on the table, where no normal
+// edge closed between them: the table holds a third of the points, the floor 40 cm below as
+// many, the rest is scattered above the table. 20 fixed hypotheses miss both planes in some
+// draws; the adaptive rule draws until a triple of one plane's inliers is all but certain.
+TEST(RansacPlane, AdaptiveHypothesesFindAPlaneThatHoldsAThirdOfThePoints) {
+  std::mt19937 scene(3);
+  const Eigen::Vector3f normal = Eigen::Vector3f(0.0F, -0.85F, -0.53F).normalized();
+  const Eigen::Vector3f table_centre(0.0F, 0.3F, 1.2F);
+  std::vector<float> xyz = plane_points(normal, table_centre, 0.8F, 30, 0.001F, scene);
+  const std::vector<float> floor =
+      plane_points(normal, table_centre - 0.4F * normal, 0.8F, 30, 0.001F, scene);
+  xyz.insert(xyz.end(), floor.begin(), floor.end());
+  std::uniform_real_distribution<float> spread(-0.4F, 0.4F);
+  std::uniform_real_distribution<float> height(0.02F, 0.3F);
+  for (int i = 0; i < 900; ++i) {
+    const Eigen::Vector3f p = table_centre + spread(scene) * normal.unitOrthogonal() +
+                              spread(scene) * normal.cross(normal.unitOrthogonal()) +
+                              height(scene) * normal;
+    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  }
+  const auto on_a_plane = [&](const std::optional<Plane>& plane) {
+    if (!plane || plane->normal.dot(normal) < std::cos(2.0F * 3.14159265F / 180.0F)) return false;
+    const float table_offset = -normal.dot(table_centre);
+    return std::abs(plane->offset_m - table_offset) < 0.005F ||
+           std::abs(plane->offset_m - (table_offset + 0.4F)) < 0.005F;
+  };
+  RansacPlaneRule fixed;
+  fixed.inlier_distance_m = 0.005F;
+  RansacPlaneRule adaptive = fixed;
+  adaptive.confidence = 0.99;
+  adaptive.max_iterations = 500;
+  int fixed_found = 0;
+  int adaptive_found = 0;
+  constexpr int kDraws = 40;
+  for (int seed = 1; seed <= kDraws; ++seed) {
+    std::mt19937 rng(static_cast<std::uint32_t>(seed));
+    fixed_found += on_a_plane(ransac_plane(xyz, fixed, rng)) ? 1 : 0;
+    std::mt19937 again(static_cast<std::uint32_t>(seed));
+    adaptive_found += on_a_plane(ransac_plane(xyz, adaptive, again)) ? 1 : 0;
+  }
+  EXPECT_EQ(adaptive_found, kDraws);
+  EXPECT_LT(fixed_found, kDraws);
 }
 
 TEST(RansacPlane, NothingFromDegeneratePoints) {

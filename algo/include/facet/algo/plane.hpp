@@ -83,10 +83,19 @@ class PlaneMoments {
 std::optional<Plane> least_squares_plane(std::span<const float> xyz);
 
 struct RansacPlaneRule {
-  int iterations = 20;               // hypotheses, each from a random triple of points
+  int iterations = 20;               // hypotheses at least, each from a random triple of points
   float inlier_distance_m = 0.006F;  // a hypothesis' and the refit's inlier threshold
   int max_scored_points = 1000;      // hypotheses are scored on at most this many points
+  // Adaptive stopping: more hypotheses until, at the best hypothesis' inlier share w, a triple
+  // of inliers has been drawn with this probability (1 - (1 - w³)^n ≥ confidence), up to
+  // max_iterations. 0 = exactly `iterations`.
+  double confidence = 0.0;
+  int max_iterations = 20;
 };
+
+// The hypotheses the adaptive rule asks for when the best one so far holds `inlier_share` of the
+// scored points: the n with 1 - (1 - w³)^n ≥ confidence (1 for w = 1, a huge count for w → 0).
+int ransac_hypotheses_needed(double inlier_share, double confidence);
 
 // The best-supported hypothesis, refitted by least squares to its inliers. xyz as above; `rng`
 // is advanced (the caller seeds it). Nothing when the points are degenerate: fewer than 3, no
