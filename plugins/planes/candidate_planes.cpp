@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "facet/algo/label_runs.hpp"
@@ -88,27 +89,40 @@ std::vector<Candidate> collect_candidates(const cv::Mat& labels, const cv::Mat& 
   return candidates;
 }
 
-// The points of `candidate` farther than `distance_m` from `model`, and the centroid of the others
-// (those on the plane).
+// Every k-th of `xyz`'s points (interleaved), at most kFootprintPoints of them.
+std::vector<Eigen::Vector3f> footprint_of(std::span<const float> xyz) {
+  const std::size_t count = xyz.size() / 3;
+  const std::size_t step =
+      std::max<std::size_t>(1, (count + kFootprintPoints - 1) / kFootprintPoints);
+  std::vector<Eigen::Vector3f> footprint;
+  footprint.reserve(count / step + 1);
+  for (std::size_t i = 0; i < count; i += step)
+    footprint.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  return footprint;
+}
+
+// The points of `candidate` farther than `distance_m` from `model`, and the centroid and the
+// footprint of the others (those on the plane).
 struct PlaneSplit {
   std::vector<float> off;
   Eigen::Vector3f on_centroid_m = Eigen::Vector3f::Zero();
+  std::vector<Eigen::Vector3f> on_footprint_m;
 };
 
 PlaneSplit split_by_plane(const Candidate& candidate, const algo::Plane& model, float distance_m) {
   PlaneSplit split;
-  Eigen::Vector3d on_sum = Eigen::Vector3d::Zero();
-  std::size_t on_count = 0;
+  std::vector<float> on;
   for (std::size_t i = 0; i + 2 < candidate.points.size(); i += 3) {
     const float* p = &candidate.points[i];
-    if (std::abs(model.signed_distance_m(p)) > distance_m) {
-      split.off.insert(split.off.end(), p, p + 3);
-    } else {
-      on_sum += Eigen::Vector3d(p[0], p[1], p[2]);
-      ++on_count;
-    }
+    auto& side = std::abs(model.signed_distance_m(p)) > distance_m ? split.off : on;
+    side.insert(side.end(), p, p + 3);
   }
-  if (on_count > 0) split.on_centroid_m = (on_sum / static_cast<double>(on_count)).cast<float>();
+  Eigen::Vector3d on_sum = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i + 2 < on.size(); i += 3)
+    on_sum += Eigen::Vector3d(on[i], on[i + 1], on[i + 2]);
+  if (!on.empty())
+    split.on_centroid_m = (on_sum / static_cast<double>(on.size() / 3)).cast<float>();
+  split.on_footprint_m = footprint_of(on);
   return split;
 }
 
@@ -148,12 +162,13 @@ std::vector<CandidatePlane> find_candidate_planes(const cv::Mat& labels, const c
           sampled > 0 ? part.size_px * static_cast<std::int64_t>(split.off.size() / 3) / sampled
                       : 0;
       if (last || off_px < rule.min_px) {
-        fitted.push_back({*model, part.size_px, centroid});
+        fitted.push_back({*model, part.size_px, centroid, footprint_of(part.points)});
         break;
       }
       // A patch that holds another plane: this plane takes its own points' size and centroid (the
       // levels of the scene model compare centroids with planes), not the whole patch's.
-      fitted.push_back({*model, part.size_px - off_px, split.on_centroid_m});
+      fitted.push_back(
+          {*model, part.size_px - off_px, split.on_centroid_m, std::move(split.on_footprint_m)});
       previous = model;
       part.points = std::move(split.off);
       part.size_px = off_px;

@@ -29,7 +29,12 @@ struct CandidatePlane {
   algo::Plane model;
   std::int64_t size_px = 0;  // pixels of the patch (or, after a split, on this plane)
   Eigen::Vector3f centroid_m = Eigen::Vector3f::Zero();  // of the points fitted
+  // At most kFootprintPoints of those points, evenly spread: where the plane lies, for the scene
+  // model's test of whether one level lies over another.
+  std::vector<Eigen::Vector3f> footprint_m;
 };
+
+inline constexpr std::size_t kFootprintPoints = 256;
 
 // labels: CV_32SC1 patch ids 1..count, continuous; xyz: CV_32FC3 points (metres, NaN = invalid),
 // continuous, same size. The planes come largest first (stable: ties keep the patch order, a

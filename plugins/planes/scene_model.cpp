@@ -1,8 +1,10 @@
 #include "planes/scene_model.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <opencv2/imgproc.hpp>
 
 namespace facet::planes {
 namespace {
@@ -48,12 +50,48 @@ std::vector<Level> group_levels(const std::vector<algo::Plane>& candidates,
   return levels;
 }
 
+// The footprints of a level's members, together.
+std::vector<Eigen::Vector3f> level_points(
+    const Level& level, const std::vector<std::vector<Eigen::Vector3f>>& footprints_m) {
+  std::vector<Eigen::Vector3f> points;
+  for (const int c : level.members) {
+    if (static_cast<std::size_t>(c) < footprints_m.size()) {
+      points.insert(points.end(), footprints_m[c].begin(), footprints_m[c].end());
+    }
+  }
+  return points;
+}
+
 }  // namespace
+
+double share_over(const std::vector<Eigen::Vector3f>& upper_m,
+                  const std::vector<Eigen::Vector3f>& lower_m, const Eigen::Vector3f& up) {
+  if (upper_m.empty() || lower_m.size() < 3) return 0.0;
+  // Two axes across up: coordinates on the floor plan.
+  const Eigen::Vector3f axis_u = up.unitOrthogonal();
+  const Eigen::Vector3f axis_v = up.cross(axis_u);
+  const auto plan = [&](const Eigen::Vector3f& p) {
+    return cv::Point2f(p.dot(axis_u), p.dot(axis_v));
+  };
+  std::vector<cv::Point2f> lower_plan;
+  lower_plan.reserve(lower_m.size());
+  for (const Eigen::Vector3f& p : lower_m)
+    lower_plan.push_back(plan(p));
+  std::vector<cv::Point2f> hull;
+  cv::convexHull(lower_plan, hull);
+  if (hull.size() < 3 || cv::contourArea(hull) <= 0.0) return 0.0;
+  std::size_t inside = 0;
+  for (const Eigen::Vector3f& p : upper_m) {
+    if (cv::pointPolygonTest(hull, plan(p), false) >= 0.0) ++inside;
+  }
+  return static_cast<double>(inside) / static_cast<double>(upper_m.size());
+}
 
 TableChoice choose_table(const std::vector<algo::Plane>& candidates,
                          const std::vector<Eigen::Vector3f>& centroids_m,
-                         const std::vector<std::int64_t>& sizes_px, std::int64_t valid_px,
-                         const Eigen::Vector3f& up, const TableRule& rule) {
+                         const std::vector<std::int64_t>& sizes_px,
+                         const std::vector<std::vector<Eigen::Vector3f>>& footprints_m,
+                         std::int64_t valid_px, const Eigen::Vector3f& up, const TableRule& rule) {
   TableChoice choice;
   choice.roles.assign(candidates.size(), CandidateRole::undecided);
   choice.height_m.assign(candidates.size(), 0.0F);
@@ -88,16 +126,23 @@ TableChoice choose_table(const std::vector<algo::Plane>& candidates,
   }
   table = above_floor;
   // The largest level may be something standing on the table: step down while a large enough
-  // level lies a little below. Each step goes down, so this ends.
+  // level lies a little below and under it. Each step goes down, so this ends.
   for (bool stepped = true; stepped;) {
     stepped = false;
     std::size_t lower = table;
+    const std::vector<Eigen::Vector3f> upper_points = level_points(levels[table], footprints_m);
     for (std::size_t i = 0; i < levels.size(); ++i) {
       const float height = height_above(levels[i], levels[table]);
       const bool just_below = height < -rule.level_tolerance_m &&
                               height >= -rule.max_object_height_m &&
                               share(levels[i]) >= rule.min_table_fraction;
-      if (just_below && (lower == table || levels[i].size_px > levels[lower].size_px)) lower = i;
+      if (!just_below || (lower != table && levels[i].size_px <= levels[lower].size_px)) continue;
+      // Beside it is not under it: a chair's seat behind a low table, a centimetre lower.
+      if (share_over(upper_points, level_points(levels[i], footprints_m), up) <
+          rule.min_table_under_share) {
+        continue;
+      }
+      lower = i;
     }
     if (lower != table) {
       table = lower;

@@ -11,9 +11,12 @@
 //   - the largest level is the table, unless
 //   - a level lies more than max_object_height_m above it and holds large_view_fraction of the
 //     view: then the largest level is the floor and that level the table seen above it; or
-//   - a level lies below it by less than max_object_height_m and holds min_table_fraction of the
-//     view: then the largest level is the top of something standing on that lower table (a
-//     board, a big box lying flat) and the lower level is the table (repeated downwards).
+//   - a level lies below it by less than max_object_height_m, holds min_table_fraction of the
+//     view and lies under it (min_table_under_share of the largest level's points, seen from
+//     above, fall inside the lower level's convex outline): then the largest level is the top of
+//     something standing on that lower table (a board, a big box lying flat) and the lower level
+//     is the table (repeated downwards). A chair's seat beside a low table, a centimetre lower,
+//     is not under it.
 // Levels above the table by up to max_object_height_m are object tops: never support planes.
 
 #include <Eigen/Core>
@@ -25,11 +28,12 @@
 namespace facet::planes {
 
 struct TableRule {
-  double min_cos_horizontal = 0.985;  // cos(alpha_z): a normal this close to up is horizontal
-  float level_tolerance_m = 0.006F;   // centroids this close to a plane are on its level
-  float max_object_height_m = 0.3F;   // a raised level up to this high is an object top
-  double min_table_fraction = 0.05;   // a lower level this large (of the valid px) is the table
-  double large_view_fraction = 0.15;  // a level this large far above the floor is the table
+  double min_cos_horizontal = 0.985;    // cos(alpha_z): a normal this close to up is horizontal
+  float level_tolerance_m = 0.006F;     // centroids this close to a plane are on its level
+  float max_object_height_m = 0.3F;     // a raised level up to this high is an object top
+  double min_table_fraction = 0.05;     // a lower level this large (of the valid px) is the table
+  double large_view_fraction = 0.15;    // a level this large far above the floor is the table
+  double min_table_under_share = 0.25;  // of the upper level's points over the lower's outline
 };
 
 enum class CandidateRole : std::uint8_t {
@@ -44,11 +48,18 @@ struct TableChoice {
   std::vector<float> height_m;       // per horizontal candidate: its level above the table
 };
 
-// candidates, their centroids (camera frame, metres) and sizes (pixels) in the order of
-// planes.support (largest first); `up` is world up (unit); valid_px the frame's valid pixels.
+// candidates, their centroids (camera frame, metres), sizes (pixels) and footprints (a sample of
+// their points) in the order of planes.support (largest first); `up` is world up (unit);
+// valid_px the frame's valid pixels.
 TableChoice choose_table(const std::vector<algo::Plane>& candidates,
                          const std::vector<Eigen::Vector3f>& centroids_m,
-                         const std::vector<std::int64_t>& sizes_px, std::int64_t valid_px,
-                         const Eigen::Vector3f& up, const TableRule& rule);
+                         const std::vector<std::int64_t>& sizes_px,
+                         const std::vector<std::vector<Eigen::Vector3f>>& footprints_m,
+                         std::int64_t valid_px, const Eigen::Vector3f& up, const TableRule& rule);
+
+// The share of `upper`'s points that, seen along `up` (unit), fall inside the convex hull of
+// `lower`'s points; 0 when `lower` spans no area or `upper` is empty.
+double share_over(const std::vector<Eigen::Vector3f>& upper_m,
+                  const std::vector<Eigen::Vector3f>& lower_m, const Eigen::Vector3f& up);
 
 }  // namespace facet::planes

@@ -207,6 +207,17 @@ const Param<double> kMinTableFraction{
     "one needs to be taken for the table (the largest level is then a board lying on "
     "it).",
     {.min = 0.0, .max = 1.0, .origin = "measured on generated crowded tables"}};
+const Param<double> kMinTableUnderShare{
+    "min_table_under_share",
+    0.25,
+    "Scene model: a level below the largest one is the table that level stands on only "
+    "when at least this share of the largest level's points, seen from above, lies inside "
+    "the lower level's convex outline. A board lying on a table has the table around or "
+    "behind it; a chair's seat beside a low table, a centimetre lower, lies beside it and "
+    "would take the objects' table away.",
+    {.min = 0.0,
+     .max = 1.0,
+     .origin = "a low table beside a chair (a RealSense frame); docs/planes.md"}};
 const Param<double> kHorizontalMaxAngle{
     "horizontal_max_deg",
     10.0,
@@ -440,10 +451,10 @@ StageSpec SupportPlaneStage::spec() {
                kMaxCandidates, kFitMaxPoints, kObjectFaceOffPlaneFraction, kMinViewFraction,
                kMaxBehindFraction, kBehindMargin, kMinObjectFraction, kMaxSupportBehindFraction,
                kLargeViewFraction, kSampleStride, kMinObjectHeight, kMaxObjectHeight,
-               kMinTableFraction, kHorizontalMaxAngle, kUp, kUpPriorMaxAngle, kMinSegmentSize,
-               kSplitMaxDistance, kSplitGrowthStart, kPlanesPerPatch, kFlatObjectWindow,
-               kFlatObjectMinStep, kFlatObjectMinSize, kFlatObjectMinWidth, kFlatObjectMaxHeight,
-               kSeed, algo::kReferenceAreaParam)
+               kMinTableFraction, kMinTableUnderShare, kHorizontalMaxAngle, kUp, kUpPriorMaxAngle,
+               kMinSegmentSize, kSplitMaxDistance, kSplitGrowthStart, kPlanesPerPatch,
+               kFlatObjectWindow, kFlatObjectMinStep, kFlatObjectMinSize, kFlatObjectMinWidth,
+               kFlatObjectMaxHeight, kSeed, algo::kReferenceAreaParam)
       .concurrency(Concurrency::clonable);
 }
 
@@ -474,6 +485,7 @@ SupportPlaneStage::SupportPlaneStage(const Params& params)
   table_rule_.level_tolerance_m = static_cast<float>(kMinObjectHeight(params));
   table_rule_.max_object_height_m = static_cast<float>(kMaxObjectHeight(params));
   table_rule_.min_table_fraction = kMinTableFraction(params);
+  table_rule_.min_table_under_share = kMinTableUnderShare(params);
   table_rule_.large_view_fraction = support_rule_.large_view_fraction;
   candidate_rule_.min_px = kCandidateMinSize(params);
   candidate_rule_.max_candidates = kMaxCandidates(params);
@@ -516,10 +528,12 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
   std::vector<algo::Plane> models;
   std::vector<std::int64_t> sizes;
   std::vector<Eigen::Vector3f> centroids;
+  std::vector<std::vector<Eigen::Vector3f>> footprints;
   for (const CandidatePlane& candidate : candidates) {
     models.push_back(candidate.model);
     sizes.push_back(candidate.size_px);
     centroids.push_back(candidate.centroid_m);
+    footprints.push_back(candidate.footprint_m);
   }
 
   // The scene model: world up, the table, then which other candidates are support planes.
@@ -528,10 +542,10 @@ void SupportPlaneStage::process(ProcessContext& ctx) {
                            : dominant_horizontal(models, camera_up, up_prior_max_deg_);
   Eigen::Vector3f up = up_.value_or(camera_up);
   if (!up_ && dominant >= 0) up = models[dominant].normal;
-  const TableChoice table =
-      dominant >= 0
-          ? choose_table(models, centroids, sizes, estimate_valid_px(xyz), up, table_rule_)
-          : TableChoice{-1, std::vector<CandidateRole>(models.size()), {}};
+  const TableChoice table = dominant >= 0
+                                ? choose_table(models, centroids, sizes, footprints,
+                                               estimate_valid_px(xyz), up, table_rule_)
+                                : TableChoice{-1, std::vector<CandidateRole>(models.size()), {}};
   const std::vector<CandidateEvidence> evidence =
       decide_support(xyz, models, table.table, table.roles, up, support_rule_);
   const AcceptedPlanes accepted =

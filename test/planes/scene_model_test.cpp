@@ -128,6 +128,52 @@ TEST(SceneModel, BoardOnAWideTableIsAnObject) {
   }
 }
 
+// A low table with a chair's seat behind it, a centimetre lower and larger than a twentieth of
+// the view: the seat is a level just below the table's, but beside the table, not under it, so
+// the table stays the table. Taken for the table that the table stood on, the seat would take
+// the table's role, and the table top would be an object lying on it.
+TEST(SceneModel, ASeatBesideTheTableACentimetreLowerIsNotTheTable) {
+  SceneBuilder scene;
+  scene.box(kTable.on_table(0.0, 0.05, -0.02), {0.35, 0.3, 0.02});  // 1: table top
+  scene.box(kTable.on_table(0.0, 0.7, -0.03), {0.45, 0.3, 0.02});   // 2: seat, 1 cm lower
+  scene.plane(kTable.table_point - 0.45 * kTable.up, kTable.up);    // 3: floor
+  kTable.box_on_table(scene, -0.15, 0.0, {0.05, 0.04, 0.07});       // 4
+  kTable.box_on_table(scene, 0.15, 0.1, {0.04, 0.04, 0.05});        // 5
+  const SceneRun run = run_scene(scene);
+  const auto seat_px = static_cast<double>(pixels_of(run.scene.object, 2));
+  ASSERT_GT(seat_px, 0.05 * static_cast<double>(cv::countNonZero(run.scene.object)));
+  ASSERT_LT(seat_px, static_cast<double>(pixels_of(run.scene.object, 1)));
+  ASSERT_NE(run.planes.planes.table(), nullptr);
+  EXPECT_NEAR(run.planes.planes.table()->signed_distance_m(kTable.table_point), 0.0, 0.002);
+  EXPECT_LT(share_in_blobs(run, 1), 0.05);
+  EXPECT_LT(share_in_blobs(run, 2), 0.05);
+  EXPECT_GT(share_in_blobs(run, 4), 0.9);
+  EXPECT_GT(share_in_blobs(run, 5), 0.9);
+  // Without the test of what lies under what, the seat is the table.
+  const SceneRun beside = run_scene(scene, {{"min_table_under_share", 0.0}});
+  ASSERT_NE(beside.planes.planes.table(), nullptr);
+  EXPECT_NEAR(beside.planes.planes.table()->signed_distance_m(kTable.table_point), 0.01, 0.002);
+  // ... and the table, a centimetre above it, an object top in a blob with what stands on it.
+  EXPECT_GT(share_in_blobs(beside, 1), 0.5);
+}
+
+// A board lying on a table, larger in view than the strips of table on either side of it: the
+// strips lie around the board, so the table is still the strips' level, and the board an object.
+TEST(SceneModel, ABoardWiderThanTheTableInViewStillLiesOnIt) {
+  SceneBuilder scene;
+  scene.plane(kTable.table_point, kTable.up);                               // 1
+  kTable.box_on_table(scene, 0.0, 0.5, {0.5, 1.2, 0.005});                  // 2: board
+  scene.box(kTable.on_table(-0.1, 0.05, 0.01 + 0.06), {0.05, 0.04, 0.06});  // 3
+  const SceneRun run = run_scene(scene);
+  const auto table_px = static_cast<double>(pixels_of(run.scene.object, 1));
+  ASSERT_LT(table_px, static_cast<double>(pixels_of(run.scene.object, 2)));
+  ASSERT_GT(table_px, 0.05 * static_cast<double>(cv::countNonZero(run.scene.object)));
+  ASSERT_NE(run.planes.planes.table(), nullptr);
+  EXPECT_NEAR(run.planes.planes.table()->signed_distance_m(kTable.table_point), 0.0, 0.002);
+  EXPECT_GT(share_in_blobs(run, 2), 0.9);
+  EXPECT_GT(share_in_blobs(run, 3), 0.9);
+}
+
 // A table 4 cm thick seen with its front edge, the floor below and a wall behind: the edge strip
 // lies below the table plane, so it is structure, not an object.
 TEST(SceneModel, TableFrontEdgeIsStructure) {
