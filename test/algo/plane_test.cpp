@@ -119,20 +119,29 @@ TEST(PlaneMoments, NoPlaneThroughTooFewOrCollinearPoints) {
   EXPECT_FALSE(least_squares_plane(one_point).has_value());
 }
 
+// `count` points over the 80 cm square around `centre_m` on the plane with unit normal
+// `normal`, each raised along it by a height drawn from [min_height_m, max_height_m): the objects
+// on a table, as outliers. Appended to `xyz`.
+void add_points_above(const Eigen::Vector3f& normal, const Eigen::Vector3f& centre_m, int count,
+                      float min_height_m, float max_height_m, std::mt19937& rng,
+                      std::vector<float>& xyz) {
+  std::uniform_real_distribution<float> spread(-0.4F, 0.4F);
+  std::uniform_real_distribution<float> height(min_height_m, max_height_m);
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector3f p = centre_m + spread(rng) * normal.unitOrthogonal() +
+                              spread(rng) * normal.cross(normal.unitOrthogonal()) +
+                              height(rng) * normal;
+    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  }
+}
+
 TEST(RansacPlane, FindsTheTableAmongOutliersAndRefitsItsNoise) {
   std::mt19937 scene(7);
   const Eigen::Vector3f normal = Eigen::Vector3f(0.0F, -0.85F, -0.53F).normalized();
   const Eigen::Vector3f centre(0.0F, 0.4F, 1.3F);
   std::vector<float> xyz = plane_points(normal, centre, 0.8F, 50, 0.001F, scene);
   // 30 % of the points scattered 5-30 cm in front of the table.
-  std::uniform_real_distribution<float> spread(-0.4F, 0.4F);
-  std::uniform_real_distribution<float> height(0.05F, 0.3F);
-  for (int i = 0; i < 1070; ++i) {
-    const Eigen::Vector3f p = centre + spread(scene) * normal.unitOrthogonal() +
-                              spread(scene) * normal.cross(normal.unitOrthogonal()) +
-                              height(scene) * normal;
-    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
-  }
+  add_points_above(normal, centre, 1070, 0.05F, 0.3F, scene, xyz);
   std::mt19937 rng(1);
   const auto plane = ransac_plane(xyz, RansacPlaneRule{}, rng);
   ASSERT_TRUE(plane.has_value());
@@ -168,14 +177,7 @@ TEST(RansacPlane, AdaptiveHypothesesFindAPlaneThatHoldsAThirdOfThePoints) {
   const std::vector<float> floor =
       plane_points(normal, table_centre - 0.4F * normal, 0.8F, 30, 0.001F, scene);
   xyz.insert(xyz.end(), floor.begin(), floor.end());
-  std::uniform_real_distribution<float> spread(-0.4F, 0.4F);
-  std::uniform_real_distribution<float> height(0.02F, 0.3F);
-  for (int i = 0; i < 900; ++i) {
-    const Eigen::Vector3f p = table_centre + spread(scene) * normal.unitOrthogonal() +
-                              spread(scene) * normal.cross(normal.unitOrthogonal()) +
-                              height(scene) * normal;
-    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
-  }
+  add_points_above(normal, table_centre, 900, 0.02F, 0.3F, scene, xyz);
   const auto on_a_plane = [&](const std::optional<Plane>& plane) {
     if (!plane || plane->normal.dot(normal) < std::cos(2.0F * 3.14159265F / 180.0F)) return false;
     const float table_offset = -normal.dot(table_centre);
