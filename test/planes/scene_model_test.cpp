@@ -3,6 +3,8 @@
 // trays, a board) lying on the table are objects, never support planes; what stands on them is
 // stacked, not supported by a second table; the table's front edge and what lies beyond the
 // table are background.
+#include "planes/scene_model.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -126,6 +128,34 @@ TEST(SceneModel, BoardOnAWideTableIsAnObject) {
   for (int object = 2; object <= 4; ++object) {
     EXPECT_GT(share_in_blobs(run, object), 0.9) << "object " << object;
   }
+}
+
+// Points on a grid of `side` × `side` cells of 1 cm, at (x0, z0) on the floor plan (y = 0, up -y).
+std::vector<Eigen::Vector3f> grid_m(float x0_m, float z0_m, int side) {
+  std::vector<Eigen::Vector3f> points;
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j)
+      points.emplace_back(x0_m + 0.01F * static_cast<float>(i), 0.0F,
+                          z0_m + 0.01F * static_cast<float>(j));
+  }
+  return points;
+}
+
+TEST(SceneModel, ShareOverIsThePartOfTheUpperPointsInsideTheLowerOutline) {
+  const Eigen::Vector3f up(0.0F, -1.0F, 0.0F);
+  const std::vector<Eigen::Vector3f> lower = grid_m(0.0F, 0.0F, 41);  // 40 cm square
+  EXPECT_DOUBLE_EQ(planes::share_over(grid_m(0.1F, 0.1F, 11), lower, up), 1.0);
+  EXPECT_DOUBLE_EQ(planes::share_over(grid_m(0.6F, 0.0F, 11), lower, up), 0.0);
+  // 6 of the upper square's 11 columns (x 0.35-0.40 of 0.35-0.45) lie over the lower one.
+  EXPECT_NEAR(planes::share_over(grid_m(0.35F, 0.1F, 11), lower, up), 6.0 / 11.0, 1e-9);
+  // The height along up does not matter: seen from above.
+  std::vector<Eigen::Vector3f> raised = grid_m(0.1F, 0.1F, 11);
+  for (Eigen::Vector3f& p : raised)
+    p += 0.05F * up;
+  EXPECT_DOUBLE_EQ(planes::share_over(raised, lower, up), 1.0);
+  // No outline, no share: a line, or nothing.
+  EXPECT_EQ(planes::share_over(grid_m(0.1F, 0.1F, 3), grid_m(0.0F, 0.0F, 1), up), 0.0);
+  EXPECT_EQ(planes::share_over({}, lower, up), 0.0);
 }
 
 // A low table with a chair's seat behind it, a centimetre lower and larger than a twentieth of
