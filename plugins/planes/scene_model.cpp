@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <opencv2/imgproc.hpp>
+#include <utility>
+
+#include "planes/convex_hull.hpp"
 
 namespace facet::planes {
 namespace {
@@ -66,23 +68,23 @@ std::vector<Eigen::Vector3f> level_points(
 
 double share_over(const std::vector<Eigen::Vector3f>& upper_m,
                   const std::vector<Eigen::Vector3f>& lower_m, const Eigen::Vector3f& up) {
-  if (upper_m.empty() || lower_m.size() < 3) return 0.0;
+  if (upper_m.empty()) return 0.0;
   // Two axes across up: coordinates on the floor plan.
-  const Eigen::Vector3f axis_u = up.unitOrthogonal();
-  const Eigen::Vector3f axis_v = up.cross(axis_u);
+  const Eigen::Vector3d axis_u = up.cast<double>().unitOrthogonal();
+  const Eigen::Vector3d axis_v = up.cast<double>().cross(axis_u);
   const auto plan = [&](const Eigen::Vector3f& p) {
-    return cv::Point2f(p.dot(axis_u), p.dot(axis_v));
+    const Eigen::Vector3d q = p.cast<double>();
+    return Eigen::Vector2d(q.dot(axis_u), q.dot(axis_v));
   };
-  std::vector<cv::Point2f> lower_plan;
+  std::vector<Eigen::Vector2d> lower_plan;
   lower_plan.reserve(lower_m.size());
   for (const Eigen::Vector3f& p : lower_m)
     lower_plan.push_back(plan(p));
-  std::vector<cv::Point2f> hull;
-  cv::convexHull(lower_plan, hull);
-  if (hull.size() < 3 || cv::contourArea(hull) <= 0.0) return 0.0;
+  const std::vector<Eigen::Vector2d> hull = convex_hull(std::move(lower_plan));
+  if (hull.empty()) return 0.0;
   std::size_t inside = 0;
   for (const Eigen::Vector3f& p : upper_m) {
-    if (cv::pointPolygonTest(hull, plan(p), false) >= 0.0) ++inside;
+    if (inside_convex_hull(hull, plan(p))) ++inside;
   }
   return static_cast<double>(inside) / static_cast<double>(upper_m.size());
 }

@@ -4,38 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planes/convex_hull.hpp"
+
 namespace facet::planes {
 namespace {
 
 using Point2 = Eigen::Vector2d;
-
-double cross(const Point2& o, const Point2& a, const Point2& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
-// Andrew's monotone chain; counter-clockwise, no collinear vertices.
-std::vector<Point2> convex_hull(std::vector<Point2> points) {
-  std::sort(points.begin(), points.end(), [](const Point2& a, const Point2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() < 3) return {};
-  std::vector<Point2> hull(2 * points.size());
-  std::size_t k = 0;
-  for (const Point2& p : points) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0)
-      --k;
-    hull[k++] = p;
-  }
-  for (std::size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {
-    const Point2& p = points[i - 1];
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], p) <= 0.0)
-      --k;
-    hull[k++] = p;
-  }
-  hull.resize(k - 1);
-  return hull.size() >= 3 ? hull : std::vector<Point2>{};
-}
 
 }  // namespace
 
